@@ -1,0 +1,16 @@
+// Output files are written whole or not at all: write to "<path>.tmp-<pid>" then rename.
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace hylios {
+
+/// Calls write(tmpPath) and renames tmpPath onto `path` if it returns without throwing; otherwise
+/// removes tmpPath and rethrows. Throws std::runtime_error if the rename fails.
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path& tmpPath)>& write);
+/// Convenience: writes `contents` as a text file atomically.
+void writeTextAtomically(const std::filesystem::path& path, const std::string& contents);
+
+}  // namespace hylios

@@ -1,0 +1,11 @@
+// The hylios subcommands. Each lives in its own <name>_command.cpp and registers itself on the
+// CLI11 app; main.cpp calls every register function.
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace hylios {
+
+void registerCoefficientsCommand(CLI::App& app);  // coefficients_command.cpp
+void registerSlabCommand(CLI::App& app);          // slab_command.cpp
+
+}  // namespace hylios
