@@ -1,0 +1,27 @@
+// A measured reflectance curve to compare a modelled spectrum with: one column of a CSV file whose
+// first column is wavelength in nm (e.g. the NCSU skin database, Vrhel et al. 1994).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace hylios {
+
+struct MeasuredSpectrum {
+  std::string label;                ///< the column's header
+  std::vector<double> wavelengthNm; ///< ascending
+  std::vector<double> value;
+  /// Linear interpolation; throws std::out_of_range outside [front, back].
+  double at(double wavelengthNm) const;
+  bool covers(double wavelengthNm) const;
+};
+
+/// Loads "FILE:COLUMN": COLUMN is a header name, a unique header prefix (e.g. "obj113"), or a
+/// 1-based column number. Errors say file:line and what is wrong.
+MeasuredSpectrum loadMeasuredSpectrum(const std::string& fileAndColumn);
+
+/// Root-mean-square of model − measured over the model wavelengths the measurement covers.
+/// Returns the number of wavelengths compared through `compared`.
+double rmsDifference(const std::vector<double>& wavelengthNm, const std::vector<double>& model,
+                     const MeasuredSpectrum& measured, std::size_t* compared = nullptr);
+
+}  // namespace hylios

@@ -1,0 +1,23 @@
+// The command-line options that choose a skin specimen: --specimen NAME|PATH and --set KEY=VALUE
+// (repeatable overrides of the quantities scenes vary, see skin::overrideKeys()).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "skin/specimen.h"
+
+namespace hylios {
+
+struct SpecimenOptions {
+  std::string specimen = "S1";
+  std::vector<std::string> overrides;  ///< "key=value"
+};
+
+void addSpecimenOptions(CLI::App& command, SpecimenOptions& options);
+
+/// Loads the specimen (by name from scenes/specimens/ or by path) and applies the overrides in
+/// order. Throws skin::SpecimenError with the offending file position or "--set key=value".
+skin::Specimen loadSpecimenWithOverrides(const SpecimenOptions& options);
+
+}  // namespace hylios
