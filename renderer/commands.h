@@ -7,5 +7,6 @@ namespace hylios {
 
 void registerCoefficientsCommand(CLI::App& app);  // coefficients_command.cpp
 void registerSlabCommand(CLI::App& app);          // slab_command.cpp
+void registerSpectrumCommand(CLI::App& app);      // spectrum_command.cpp
 
 }  // namespace hylios

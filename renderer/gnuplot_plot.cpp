@@ -68,8 +68,10 @@ std::string panelCommands(const PlotPanel& panel, const std::filesystem::path& f
     if (!series.yError.empty())
       script << file << " using 1:($2-$3):($2+$3) with filledcurves fs transparent solid 0.25 "
              << "lc " << (s + 1) << " notitle, \\\n  ";
-    script << file << " using 1:2 with " << (series.style.empty() ? "lines lw 2" : series.style)
-           << " lc " << (s + 1) << " title " << quoted(series.title);
+    const std::string style = series.style.empty() ? "lines lw 2" : series.style;
+    script << file << " using 1:2 with " << style;
+    if (style.find(" lc ") == std::string::npos) script << " lc " << (s + 1);
+    script << " title " << quoted(series.title);
   }
   script << "\n";
   return script.str();

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   hylios::registerCoefficientsCommand(app);
   hylios::registerSlabCommand(app);
+  hylios::registerSpectrumCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,5 +1,6 @@
 #include "skin/layered_slab.h"
 
+#include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "skin/fresnel.h"
+#include "skin/henyey_greenstein.h"
 #include "skin/interface_crossing.h"
 #include "skin/vector3.h"
 
@@ -25,15 +27,6 @@ constexpr double kRouletteFactor = 10.0;
 constexpr std::uint64_t kPhotonsPerChunk = 4096;
 constexpr std::uint64_t kChunksPerBatch = 256;
 
-// Henyey–Greenstein polar cosine by inversion of its CDF (Henyey & Greenstein 1941; the form used
-// by MCML). Local to this file: the shared sampler is skin/henyey_greenstein.h (helper C).
-double sampleHgCos(double g, double u) {
-  if (std::fabs(g) < 1e-6) return 2.0 * u - 1.0;  // isotropic (the O(g) correction is < 1e-6)
-  const double t = (1.0 - g * g) / (1.0 - g + 2.0 * g * u);
-  const double cosTheta = (1.0 + g * g - t * t) / (2.0 * g);
-  return std::clamp(cosTheta, -1.0, 1.0);  // rounding can leave [-1, 1] by ~1e-16
-}
-
 // Uniform azimuth as (cos phi, sin phi) without trigonometry: a uniform point in the unit disk at
 // angle a gives the doubled angle 2a, uniform on the circle.
 void sampleAzimuth(Rng& rng, double& cosPhi, double& sinPhi) {
@@ -48,7 +41,7 @@ void sampleAzimuth(Rng& rng, double& cosPhi, double& sinPhi) {
 }
 
 Vec3 scatterHenyeyGreenstein(const Vec3& direction, double g, Rng& rng) {
-  const double cosTheta = sampleHgCos(g, rng.uniform());
+  const double cosTheta = sampleHenyeyGreensteinCos(g, rng.uniform());
   const double sinTheta = std::sqrt(std::fmax(0.0, 1.0 - cosTheta * cosTheta));
   double cosPhi, sinPhi;
   sampleAzimuth(rng, cosPhi, sinPhi);
@@ -77,13 +70,13 @@ std::string layerLabel(std::size_t i) { return "layer " + std::to_string(i + 1);
 void requireFiniteNonNegative(double value, const std::string& where, const char* name) {
   if (!std::isfinite(value) || value < 0.0)
     throw std::invalid_argument(where + ": " + name + " must be finite and >= 0, got " +
-                                std::to_string(value));
+                                fmt::format("{:g}", value));
 }
 
 void requireIndex(double n, const std::string& where) {
   if (!std::isfinite(n) || n <= 0.0)
     throw std::invalid_argument(where + ": refractive index must be finite and > 0, got " +
-                                std::to_string(n));
+                                fmt::format("{:g}", n));
 }
 
 }  // namespace
@@ -95,7 +88,7 @@ void validateSlabProblem(const SlabProblem& problem) {
   const double angle = problem.incidenceAngleDeg;
   if (!(angle >= 0.0 && angle < 90.0))
     throw std::invalid_argument("slab: incidence angle must be in [0, 90) degrees, got " +
-                                std::to_string(angle));
+                                fmt::format("{:g}", angle));
   for (std::size_t i = 0; i < problem.layers.size(); ++i) {
     const SlabLayer& layer = problem.layers[i];
     const std::string where = layerLabel(i);
@@ -104,7 +97,7 @@ void validateSlabProblem(const SlabProblem& problem) {
     requireFiniteNonNegative(layer.muS_perCm, where, "mus");
     if (!(layer.anisotropyG > -1.0 && layer.anisotropyG < 1.0))
       throw std::invalid_argument(where + ": g must be in (-1, 1), got " +
-                                  std::to_string(layer.anisotropyG));
+                                  fmt::format("{:g}", layer.anisotropyG));
     const bool last = i + 1 == problem.layers.size();
     if (std::isinf(layer.thicknessCm) && layer.thicknessCm > 0) {
       if (!last)

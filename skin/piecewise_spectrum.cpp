@@ -1,26 +1,28 @@
 #include "skin/piecewise_spectrum.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace hylios::skin {
 
 void PiecewiseSpectrum::append(double fromNm, double toNm, std::string origin, Function value) {
   if (!(toNm > fromNm) || !value)
-    throw std::invalid_argument(fmt::format("{}: piece '{}' needs a function and from < to ({}–{} nm)",
-                                            substance_, origin, fromNm, toNm));
+    throw std::invalid_argument(
+        fmt::format("{}: piece '{}' needs a function and from < to ({}–{} nm)", substance_, origin,
+                    fromNm, toNm));
   if (!pieces_.empty() && fromNm != pieces_.back().toNm)
-    throw std::invalid_argument(fmt::format(
-        "{}: piece '{}' starts at {} nm but the previous piece ends at {} nm", substance_, origin,
-        fromNm, pieces_.back().toNm));
+    throw std::invalid_argument(
+        fmt::format("{}: piece '{}' starts at {} nm but the previous piece ends at {} nm",
+                    substance_, origin, fromNm, pieces_.back().toNm));
   pieces_.push_back(Piece{fromNm, toNm, std::move(origin), std::move(value)});
 }
 
 double PiecewiseSpectrum::operator()(double wavelengthNm) const {
-  if (pieces_.empty()) throw SpectralDataError(fmt::format("{}: the spectrum has no data", substance_));
+  if (pieces_.empty())
+    throw SpectralDataError(fmt::format("{}: the spectrum has no data", substance_));
   const SpectralCoverage range = coverage();
   if (!(wavelengthNm >= range.minNm && wavelengthNm <= range.maxNm))
     throw SpectralDataError(fmt::format(

@@ -1,4 +1,5 @@
 // The absorbers' spectra over 250–2500 nm, loaded from assets/spectra/ (see its SOURCES.md).
+// The unit derivation for every absorber is listed in docs/absorber_units.md.
 //
 // Each absorber has tabulated data plus, where a table stops short of 250–2500 nm, a declared and
 // cited extension (a power law, a band model, ...). A wavelength that neither covers is refused

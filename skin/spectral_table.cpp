@@ -1,14 +1,14 @@
 #include "skin/spectral_table.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <utility>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 
 namespace hylios::skin {
 namespace {
@@ -25,7 +25,8 @@ std::vector<std::string_view> splitFields(std::string_view line) {
   std::size_t start = 0;
   for (;;) {
     const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+    fields.push_back(
+        trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
     if (comma == std::string_view::npos) return fields;
     start = comma + 1;
   }
@@ -39,6 +40,11 @@ bool parseNumber(std::string_view field, double& value) {
   errno = 0;
   value = std::strtod(text.c_str(), &end);
   return end == text.c_str() + text.size() && errno != ERANGE && std::isfinite(value);
+}
+
+bool isNanMarker(std::string_view field) {
+  return field.size() == 3 && (field[0] == 'n' || field[0] == 'N') &&
+         (field[1] == 'a' || field[1] == 'A') && (field[2] == 'n' || field[2] == 'N');
 }
 
 struct ParsedRow {
@@ -68,7 +74,7 @@ std::vector<ParsedRow> averageDuplicates(const std::vector<ParsedRow>& rows) {
 }  // namespace
 
 SpectralTable SpectralTable::loadCsv(const std::filesystem::path& file,
-                                     DuplicateWavelengths duplicates) {
+                                     DuplicateWavelengths duplicates, MissingValues missing) {
   const std::string name = file.string();
   std::ifstream in(file);
   if (!in) throw SpectralTableError(fmt::format("{}: cannot open the spectral table file", name));
@@ -94,6 +100,8 @@ SpectralTable SpectralTable::loadCsv(const std::filesystem::path& file,
     if (fields.size() != header.size())
       throw SpectralTableError(fmt::format("{}:{}: {} fields, but the header has {} columns", name,
                                            lineNo, fields.size(), header.size()));
+    if (missing == MissingValues::DropRow && std::any_of(fields.begin(), fields.end(), isNanMarker))
+      continue;
     ParsedRow row{0.0, std::vector<double>(fields.size() - 1), lineNo};
     for (std::size_t c = 0; c < fields.size(); ++c) {
       double value = 0;
@@ -107,14 +115,15 @@ SpectralTable SpectralTable::loadCsv(const std::filesystem::path& file,
       const bool equal = row.wavelengthNm == previous.wavelengthNm;
       if (row.wavelengthNm < previous.wavelengthNm ||
           (equal && duplicates == DuplicateWavelengths::Reject))
-        throw SpectralTableError(fmt::format(
-            "{}:{}: wavelength {} nm does not ascend (line {} has {} nm)", name, lineNo,
-            row.wavelengthNm, previous.line, previous.wavelengthNm));
+        throw SpectralTableError(
+            fmt::format("{}:{}: wavelength {} nm does not ascend (line {} has {} nm)", name, lineNo,
+                        row.wavelengthNm, previous.line, previous.wavelengthNm));
     }
     rows.push_back(std::move(row));
   }
   if (header.empty()) throw SpectralTableError(fmt::format("{}: the file is empty", name));
-  if (rows.empty()) throw SpectralTableError(fmt::format("{}: no data rows after the header", name));
+  if (rows.empty())
+    throw SpectralTableError(fmt::format("{}: no data rows after the header", name));
   if (duplicates == DuplicateWavelengths::Average) rows = averageDuplicates(rows);
 
   std::vector<double> wavelengths;
@@ -135,7 +144,8 @@ SpectralTable::SpectralTable(std::string sourceName, std::vector<std::string> co
       wavelengthsNm_(std::move(wavelengthsNm)),
       columns_(std::move(columns)) {
   if (wavelengthsNm_.empty())
-    throw SpectralTableError(fmt::format("{}: a spectral table needs at least one row", sourceName_));
+    throw SpectralTableError(
+        fmt::format("{}: a spectral table needs at least one row", sourceName_));
   if (columns_.size() != columnNames_.size() || columns_.empty())
     throw SpectralTableError(fmt::format("{}: {} value columns but {} column names", sourceName_,
                                          columns_.size(), columnNames_.size()));
@@ -177,7 +187,8 @@ double SpectralTable::interpolate(std::size_t columnIdx, double wavelengthNm) co
   const auto upper = std::lower_bound(wavelengthsNm_.begin(), wavelengthsNm_.end(), wavelengthNm);
   const auto i = static_cast<std::size_t>(upper - wavelengthsNm_.begin());
   if (wavelengthsNm_[i] == wavelengthNm) return values[i];
-  const double t = (wavelengthNm - wavelengthsNm_[i - 1]) / (wavelengthsNm_[i] - wavelengthsNm_[i - 1]);
+  const double t =
+      (wavelengthNm - wavelengthsNm_[i - 1]) / (wavelengthsNm_[i] - wavelengthsNm_[i - 1]);
   return values[i - 1] + t * (values[i] - values[i - 1]);
 }
 

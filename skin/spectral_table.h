@@ -25,11 +25,18 @@ enum class DuplicateWavelengths {
   Average,  ///< replace each run of equal wavelengths by one row holding the mean of every column
 };
 
+/// What to do with a row that has a value spelled "NaN" (a source's marker for "no value").
+enum class MissingValues {
+  Reject,   ///< an error naming file:line (the default)
+  DropRow,  ///< skip the row; any other non-numeric field is still an error
+};
+
 class SpectralTable {
  public:
   /// Reads `file`. The first column is the wavelength in nm; the header names every column.
   static SpectralTable loadCsv(const std::filesystem::path& file,
-                               DuplicateWavelengths duplicates = DuplicateWavelengths::Reject);
+                               DuplicateWavelengths duplicates = DuplicateWavelengths::Reject,
+                               MissingValues missing = MissingValues::Reject);
 
   /// A table from samples (`columns[c][row]`); `sourceName` appears in error messages.
   /// Throws SpectralTableError unless wavelengths strictly ascend and every column matches them.

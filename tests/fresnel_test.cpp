@@ -64,13 +64,16 @@ TEST(FresnelTest, GrazingAndNormalLimitsAreStable) {
 
 TEST(FresnelTest, ReciprocityAndRangeOverAllAngles) {
   // R(theta_i, n1 -> n2) = R(theta_t, n2 -> n1) (Stokes relations), and 0 <= R <= 1 everywhere.
-  for (int i = 0; i <= 1000; ++i) {
+  // Near grazing the reverse crossing sits near its critical angle, where R varies like the square
+  // root of cos t: a rounding error of 1e-16 in cos t moves R by up to ~1e-11, hence 1e-9.
+  // (cos i = 0 exactly maps onto the critical angle itself and is left out.)
+  for (int i = 1; i <= 1000; ++i) {
     const double cosI = i / 1000.0;
     for (double n2 : {1.0001, 1.33, 1.5, 2.4}) {
       const FresnelResult forward = fresnel(cosI, 1.0, n2);
       ASSERT_TRUE(forward.reflectance >= 0.0 && forward.reflectance <= 1.0);
       const FresnelResult backward = fresnel(forward.cosTransmitted, n2, 1.0);
-      EXPECT_NEAR(backward.reflectance, forward.reflectance, 1e-12) << cosI << " " << n2;
+      EXPECT_NEAR(backward.reflectance, forward.reflectance, 1e-9) << cosI << " " << n2;
     }
   }
 }

@@ -1,0 +1,87 @@
+// The HyLIoS random walk of one ray through the six skin layers (paper Sec. 4, Fig. 5).
+//
+// Local frame: the skin surface is the plane z = 0, z grows into the skin, layers are stacked in
+// the order of skin/layer.h. A ray enters from air (n = 1) through the rough surface (Sec. 4.3),
+// then travels with free paths from all coefficients of its layer (Eq. 1, sampled as one summed
+// coefficient with the event chosen in proportion): absorption by the layer's absorbers
+// (Sec. 4.1), melanosome / melanosome-complex interactions (Sec. 4.2.2), Rayleigh scattering in
+// the papillary dermis at most once per pass (Sec. 4.2.1). Every layer boundary is a Fresnel test
+// with total internal reflection; the dermis–hypodermis boundary reflects everything diffusely.
+//
+// | parameter            | meaning                                                    |
+// |----------------------|------------------------------------------------------------|
+// | SkinOptics           | per-layer coefficients at one wavelength (skin_optics.h)   |
+// | incident direction   | unit vector with z > 0 (travelling into the skin)          |
+// | Rng                  | the ray's own random stream                                |
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "skin/layer.h"
+#include "skin/random.h"
+#include "skin/skin_optics.h"
+#include "skin/vector3.h"
+
+namespace hylios::skin {
+
+/// How a ray's walk ended.
+enum class PathEnd : std::uint8_t {
+  SurfaceReflection,     ///< reflected by the rough surface without entering the skin
+  SubsurfaceReflection,  ///< entered the skin and left it again through the surface
+  Transmitted,           ///< left through the bottom of a truncated stack (WalkOptions)
+  Absorbed,              ///< absorbed in `layer` (by an absorber or inside a melanosome)
+  EventLimit,            ///< stopped after kMaxEvents (counted, never silently dropped)
+};
+
+struct SkinPath {
+  PathEnd end = PathEnd::EventLimit;
+  Layer layer = Layer::StratumCorneum;  ///< where it was absorbed (PathEnd::Absorbed)
+  bool absorbedInMelanosome = false;
+  Vec3 exitDirection;                   ///< outside the skin: z < 0 reflected, z > 0 transmitted
+  double exitOffsetXCm = 0;             ///< lateral exit position relative to the entry point
+  double exitOffsetYCm = 0;
+  std::uint32_t events = 0;             ///< interactions and interface tests on the way
+};
+
+/// Switches for the processes of the walk and the shape of the stack (defaults = the paper's model).
+struct WalkOptions {
+  bool melanosomes = true;
+  bool rayleigh = true;
+  bool roughSurface = true;
+  /// The deepest layer simulated. Above the reticular dermis (e.g. the epidermis-only samples of
+  /// Fig. 8, deepest = StratumBasale) the stack ends in a smooth interface to a medium of index
+  /// belowRefractiveIndex through which rays leave (PathEnd::Transmitted); with the reticular
+  /// dermis the dermis–hypodermis junction reflects everything diffusely (Sec. 4.3).
+  Layer deepestLayer = Layer::ReticularDermis;
+  double belowRefractiveIndex = 1.0;
+};
+
+class SkinWalk {
+ public:
+  /// Hard bound on events per ray; the walk ends with PathEnd::EventLimit past it.
+  static constexpr std::uint32_t kMaxEvents = 1u << 20;
+
+  /// Throws std::invalid_argument when no layer down to options.deepestLayer has thickness.
+  explicit SkinWalk(const SkinOptics& optics, WalkOptions options = {});
+
+  /// Follows one ray arriving from air along `incidentDirection` (z > 0).
+  SkinPath trace(const Vec3& incidentDirection, Rng& rng) const;
+
+  const SkinOptics& optics() const { return optics_; }
+
+ private:
+  struct Slab {
+    Layer layer;
+    double topCm, bottomCm;
+    double refractiveIndex;
+    double muA_perCm;
+    double muMelanosome_perCm;
+    double muRayleigh_perCm;
+  };
+  SkinOptics optics_;
+  WalkOptions options_;
+  std::array<Slab, kLayerCount> slabs_{};
+  std::size_t slabCount_ = 0;  ///< layers of nonzero thickness, top to bottom
+};
+
+}  // namespace hylios::skin

@@ -1,0 +1,164 @@
+#include "skin/spectral_extensions.h"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "skin/spectral_database.h"
+
+namespace hylios::skin {
+namespace {
+
+std::string position(const std::filesystem::path& file, const toml::source_region& where) {
+  return fmt::format("{}:{}:{}", file.string(), where.begin.line, where.begin.column);
+}
+
+/// Reads the numeric keys of one TOML table, remembering which were used.
+class SectionReader {
+ public:
+  SectionReader(const toml::table& root, std::string name, const std::filesystem::path& file)
+      : name_(std::move(name)), file_(file) {
+    const toml::node* node = root.at_path(name_).node();
+    if (node == nullptr)
+      throw SpectralDataError(fmt::format("{}: missing section [{}]", file_.string(), name_));
+    table_ = node->as_table();
+    if (table_ == nullptr)
+      throw SpectralDataError(
+          fmt::format("{}: '{}' must be a table", position(file_, node->source()), name_));
+  }
+
+  double number(const std::string& key) {
+    used_.insert(key);
+    const toml::node* node = table_->get(key);
+    if (node == nullptr)
+      throw SpectralDataError(fmt::format("{}: section [{}] lacks the key '{}'",
+                                          position(file_, table_->source()), name_, key));
+    if (const auto value = node->value<double>(); value && node->is_number()) return *value;
+    throw SpectralDataError(
+        fmt::format("{}: [{}] {} must be a number", position(file_, node->source()), name_, key));
+  }
+
+  double positive(const std::string& key) {
+    const double value = number(key);
+    if (!(value > 0))
+      throw SpectralDataError(fmt::format("{}: [{}] {} must be > 0, got {}",
+                                          position(file_, table_->get(key)->source()), name_, key,
+                                          value));
+    return value;
+  }
+
+  /// Throws on a key that no reader asked for (a typo would otherwise be silently ignored).
+  void rejectUnknownKeys() const {
+    for (const auto& [key, node] : *table_)
+      if (used_.count(std::string(key.str())) == 0 && !node.is_table())
+        throw SpectralDataError(fmt::format("{}: unknown key '{}' in [{}]",
+                                            position(file_, node.source()), key.str(), name_));
+  }
+
+  AbsorptionBand band() {
+    AbsorptionBand b;
+    b.peakNm = positive("peak_nm");
+    b.sigmaBlueEv = positive("sigma_blue_ev");
+    b.sigmaRedEv = positive("sigma_red_ev");
+    b.referenceNm = positive("reference_nm");
+    b.referenceValue = positive("reference_value");
+    b.multiplier = positive("multiplier");
+    b.zeroFromNm = positive("zero_from_nm");
+    rejectUnknownKeys();
+    try {
+      b.validate(name_.c_str());
+    } catch (const std::invalid_argument& e) {
+      throw SpectralDataError(fmt::format("{}: {}", position(file_, table_->source()), e.what()));
+    }
+    return b;
+  }
+
+ private:
+  std::string name_;
+  const std::filesystem::path& file_;
+  const toml::table* table_ = nullptr;
+  std::set<std::string> used_;
+};
+
+void rejectUnknownSections(const toml::table& root, const std::filesystem::path& file) {
+  const std::set<std::string> known = {"domain",    "melanin",       "hemoglobin", "lipid",
+                                       "bilirubin", "beta_carotene", "band"};
+  for (const auto& [key, node] : root)
+    if (known.count(std::string(key.str())) == 0)
+      throw SpectralDataError(
+          fmt::format("{}: unknown section or key '{}'", position(file, node.source()), key.str()));
+  const toml::table* bands = root["band"].as_table();
+  const std::set<std::string> knownBands = {"keratin", "dna", "urocanic_acid"};
+  if (bands != nullptr)
+    for (const auto& [key, node] : *bands)
+      if (knownBands.count(std::string(key.str())) == 0)
+        throw SpectralDataError(
+            fmt::format("{}: unknown band [band.{}]", position(file, node.source()), key.str()));
+}
+
+void requireOrdered(double low, double high, const char* what, const std::filesystem::path& file) {
+  if (!(low < high))
+    throw SpectralDataError(fmt::format("{}: {} needs {} < {}", file.string(), what, low, high));
+}
+
+}  // namespace
+
+SpectralExtensions SpectralExtensions::load(const std::filesystem::path& tomlFile) {
+  toml::table root;
+  try {
+    root = toml::parse_file(tomlFile.string());
+  } catch (const toml::parse_error& e) {
+    throw SpectralDataError(fmt::format("{}: {}", position(tomlFile, e.source()), e.description()));
+  }
+  rejectUnknownSections(root, tomlFile);
+  SpectralExtensions x;
+
+  SectionReader domain(root, "domain", tomlFile);
+  x.domainMinNm = domain.positive("min_nm");
+  x.domainMaxNm = domain.positive("max_nm");
+  domain.rejectUnknownKeys();
+  requireOrdered(x.domainMinNm, x.domainMaxNm, "[domain]", tomlFile);
+
+  SectionReader melanin(root, "melanin", tomlFile);
+  x.eumelaninFitMinNm = melanin.positive("eumelanin_fit_min_nm");
+  x.pheomelaninFitMinNm = melanin.positive("pheomelanin_fit_min_nm");
+  melanin.rejectUnknownKeys();
+
+  SectionReader hb(root, "hemoglobin", tomlFile);
+  x.prahlHemoglobinMolarMass = hb.positive("prahl_molar_mass_g_per_mol");
+  x.zijlstraHemoglobinMolarMass = hb.positive("zijlstra_molar_mass_g_per_mol");
+  x.hemoglobinFloorMinNm = hb.positive("floor_min_nm");
+  x.hemoglobinFloorMaxNm = hb.positive("floor_max_nm");
+  x.bloodWaterVolumeFraction = hb.positive("blood_water_volume_fraction");
+  x.bloodHemoglobinMgPerMl = hb.positive("blood_hemoglobin_mg_per_ml");
+  x.hemoglobinDecayLengthNm = hb.positive("decay_length_nm");
+  hb.rejectUnknownKeys();
+  requireOrdered(x.hemoglobinFloorMinNm, x.hemoglobinFloorMaxNm, "[hemoglobin] floor range",
+                 tomlFile);
+  requireOrdered(x.bloodWaterVolumeFraction, 1.0, "[hemoglobin] blood_water_volume_fraction",
+                 tomlFile);
+
+  SectionReader lipid(root, "lipid", tomlFile);
+  x.cornOilFirstValidNm = lipid.positive("corn_oil_first_valid_nm");
+  lipid.rejectUnknownKeys();
+
+  SectionReader bilirubin(root, "bilirubin", tomlFile);
+  x.bilirubinMolarMass = bilirubin.positive("molar_mass_g_per_mol");
+  x.bilirubinZeroFromNm = bilirubin.positive("zero_from_nm");
+  bilirubin.rejectUnknownKeys();
+
+  SectionReader carotene(root, "beta_carotene", tomlFile);
+  x.betaCaroteneMolarMass = carotene.positive("molar_mass_g_per_mol");
+  x.betaCaroteneZeroFromNm = carotene.positive("zero_from_nm");
+  carotene.rejectUnknownKeys();
+
+  x.keratin = SectionReader(root, "band.keratin", tomlFile).band();
+  x.dna = SectionReader(root, "band.dna", tomlFile).band();
+  x.urocanicAcid = SectionReader(root, "band.urocanic_acid", tomlFile).band();
+  return x;
+}
+
+}  // namespace hylios::skin
