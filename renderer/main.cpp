@@ -11,6 +11,9 @@ int main(int argc, char** argv) {
   hylios::registerCoefficientsCommand(app);
   hylios::registerSlabCommand(app);
   hylios::registerSpectrumCommand(app);
+  hylios::registerBrdfCommand(app);
+  hylios::registerForwardProfileCommand(app);
+  hylios::registerRadialProfileCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

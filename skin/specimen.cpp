@@ -13,6 +13,8 @@
 #include <string_view>
 #include <toml++/toml.h>
 
+#include "skin/toml_location.h"
+
 namespace hylios::skin {
 namespace {
 
@@ -157,30 +159,9 @@ const std::vector<TableSchema>& schema() {
 
 // ---- messages with positions --------------------------------------------------------------
 
-std::string location(const std::string& source, const toml::source_region& region) {
-  const auto line = region.begin.line == 0 ? 1u : region.begin.line;
-  const auto column = region.begin.column == 0 ? 1u : region.begin.column;
-  return fmt::format("{}:{}:{}", source, line, column);
-}
-
 [[noreturn]] void fail(const std::string& source, const toml::source_region& region,
                        const std::string& message) {
-  throw SpecimenError(location(source, region) + ": " + message);
-}
-
-std::string_view typeName(toml::node_type type) {
-  switch (type) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a floating-point number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    default: return "nothing";
-  }
+  throw SpecimenError(tomlLocation(source, region) + ": " + message);
 }
 
 /// The key with its unit suffix removed ("thickness_mm" -> "thickness"), to recognise a known
@@ -229,7 +210,7 @@ std::vector<std::string> subtableNames() {
 double readNumber(const toml::node& node, const NumberKey& key, const std::string& source) {
   if (!node.is_number())
     fail(source, node.source(),
-         fmt::format("'{}' must be a number, got {}", key.key, typeName(node.type())));
+         fmt::format("'{}' must be a number, got {}", key.key, tomlTypeName(node.type())));
   const double value = node.value<double>().value_or(std::nan(""));
   if (!std::isfinite(value))
     fail(source, node.source(), fmt::format("'{}' = {} is not finite", key.key, value));
@@ -241,7 +222,7 @@ double readNumber(const toml::node& node, const NumberKey& key, const std::strin
 std::string readString(const toml::node& node, std::string_view key, const std::string& source) {
   if (!node.is_string())
     fail(source, node.source(),
-         fmt::format("'{}' must be a string, got {}", key, typeName(node.type())));
+         fmt::format("'{}' must be a string, got {}", key, tomlTypeName(node.type())));
   return *node.value<std::string>();
 }
 
@@ -367,7 +348,8 @@ Specimen parseSpecimen(const std::string& tomlText, const std::string& sourceNam
       fail(sourceName, root.source(), fmt::format("missing table [{}]", tableSchema.name));
     if (!node->is_table())
       fail(sourceName, node->source(),
-           fmt::format("'{}' must be a table, got {}", tableSchema.name, typeName(node->type())));
+           fmt::format("'{}' must be a table, got {}", tableSchema.name,
+                       tomlTypeName(node->type())));
     readTable(*node->as_table(), tableSchema, specimen, sourceName);
   }
   checkCrossFields(root, specimen, sourceName);
