@@ -11,5 +11,7 @@ void registerSpectrumCommand(CLI::App& app);      // spectrum_command.cpp
 void registerBrdfCommand(CLI::App& app);            // brdf_command.cpp
 void registerForwardProfileCommand(CLI::App& app);  // forward_profile_command.cpp
 void registerRadialProfileCommand(CLI::App& app);   // radial_profile_command.cpp
+void registerRenderCommand(CLI::App& app);          // render_command.cpp
+void registerFigureCommand(CLI::App& app);          // figure_command.cpp
 
 }  // namespace hylios

@@ -65,8 +65,8 @@ std::string formatCsv(const skin::TransmissionProfile& p) {
 
 void plotProfile(const ForwardProfileArguments& args, const std::string& specimenName, double belowIndex,
                  const skin::TransmissionProfile& p) {
-  PlotSeries model{"HyLIoS epidermis ± 1 s.e.", {}, {}, {}, "linespoints lw 2 pt 7 ps 0.6"};
-  PlotSeries diffuse{"cos θ (a perfectly diffuse transmitter)", {}, {}, {}, "lines lw 1 dt 2 lc rgb 'black'"};
+  PlotSeries model{"HyLIoS ± 1 s.e.", {}, {}, {}, "linespoints lw 2 pt 7 ps 0.6"};
+  PlotSeries diffuse{"cos θ (diffuse)", {}, {}, {}, "lines lw 1 dt 2 lc rgb 'black'"};
   for (std::size_t i = 0; i < p.perSteradian.size(); ++i) {
     const double centreDeg = 0.5 * (p.polarLowerDeg[i] + p.polarUpperDeg[i]);
     model.x.push_back(centreDeg);

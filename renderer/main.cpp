@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   hylios::registerBrdfCommand(app);
   hylios::registerForwardProfileCommand(app);
   hylios::registerRadialProfileCommand(app);
+  hylios::registerRenderCommand(app);
+  hylios::registerFigureCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

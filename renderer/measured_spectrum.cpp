@@ -71,10 +71,15 @@ MeasuredSpectrum loadMeasuredSpectrum(const std::string& fileAndColumn) {
   const std::string file = fileAndColumn.substr(0, colon);
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file + ": cannot open measured spectrum");
+  return parseMeasuredSpectrum(in, fileAndColumn.substr(colon + 1), file);
+}
+
+MeasuredSpectrum parseMeasuredSpectrum(std::istream& in, const std::string& columnName,
+                                       const std::string& file) {
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(file + ":1: empty file");
   const auto header = splitCsvLine(line);
-  const std::size_t column = findColumn(header, fileAndColumn.substr(colon + 1), file + ":1");
+  const std::size_t column = findColumn(header, columnName, file + ":1");
   MeasuredSpectrum spectrum;
   spectrum.label = header[column];
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {

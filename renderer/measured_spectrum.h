@@ -1,6 +1,7 @@
 // A measured reflectance curve to compare a modelled spectrum with: one column of a CSV file whose
 // first column is wavelength in nm (e.g. the NCSU skin database, Vrhel et al. 1994).
 #pragma once
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct MeasuredSpectrum {
 /// Loads "FILE:COLUMN": COLUMN is a header name, a unique header prefix (e.g. "obj113"), or a
 /// 1-based column number. Errors say file:line and what is wrong.
 MeasuredSpectrum loadMeasuredSpectrum(const std::string& fileAndColumn);
+/// Parses CSV text from `csv` as loadMeasuredSpectrum does, taking column `column` (same forms);
+/// `sourceName` stands for the file in messages.
+MeasuredSpectrum parseMeasuredSpectrum(std::istream& csv, const std::string& column,
+                                       const std::string& sourceName);
 
 /// Root-mean-square of model − measured over the model wavelengths the measurement covers.
 /// Returns the number of wavelengths compared through `compared`.

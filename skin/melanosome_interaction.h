@@ -9,7 +9,16 @@
 // reflection); a reflected ray is perturbed diffusely (cosine lobe about the inward normal) and
 // goes on inside. A ray that is not absorbed leaves with its direction turned by Algorithm 2
 // (polar angle about the incoming direction, mean angle θo, uniform azimuth).
+//
+// Speed (docs/interpretations.md): whether a melanosome absorbs does not depend on the ray's
+// direction. Eq. 8 draws the axis relative to the ray (angle α, uniform azimuth β), the spheroid
+// is symmetric about its axis and under reflection through its equator, and the silhouette point
+// and the diffuse bounces are drawn by rotation-equivariant laws; so the whole internal walk is
+// traced in the spheroid's body frame (axis = z, unit a = 1) with the ray in the x–z plane at
+// angle α to the axis, and β and the sign of cosα need not be drawn. The outgoing direction only
+// depends on Algorithm 2. MelanosomeLayer holds a layer's constants for one wavelength.
 #pragma once
+#include "skin/fresnel_pair.h"
 #include "skin/layer.h"
 #include "skin/random.h"
 #include "skin/skin_optics.h"
@@ -27,10 +36,39 @@ struct MelanosomeEvent {
 /// (with 1.7/1.4 and cosine-perturbed bounces the chance of reaching it is below 1e-300).
 inline constexpr int kMaxMelanosomeBounces = 10000;
 
+/// The constants of one layer's melanosomes at one wavelength, checked once.
+class MelanosomeLayer {
+ public:
+  MelanosomeLayer() = default;
+  /// Throws std::invalid_argument for a layer without a valid spheroid (0 < a <= c) or with a
+  /// negative interior coefficient, non-positive indices or an invalid θo.
+  MelanosomeLayer(const SkinOptics& optics, Layer layer);
+  /// One melanosome (a ≤ c in any one unit, interior coefficient in the inverse of that unit).
+  MelanosomeLayer(double semiMinor, double semiMajor, double interiorMuA, double nLayer,
+                  double nMelanin);
+
+  /// One interaction: a dispersed melanosome or a complex, then Algorithm 2 if not absorbed.
+  MelanosomeEvent interact(const Vec3& direction, Rng& rng) const;
+  /// One melanosome met by a ray: true if the ray is absorbed inside it.
+  bool absorbedInOne(Rng& rng) const;
+
+ private:
+  unsigned melanosomesToMeet(Rng& rng) const;
+  double aspect_ = 1;            // γ = c/a
+  double inverseAspect_ = 1;     // 1/γ
+  double muA_perMinorAxis_ = 0;  // interior coefficient × a (chords are in units of a)
+  FresnelPair entering_, leaving_;  // epidermis → melanin and back
+  bool inComplexes_ = false;
+  unsigned wholeCount_ = 1;      // floor(m)
+  double fractionalCount_ = 0;   // m − floor(m)
+  double meanAngleRad_ = 0;      // θo of Algorithm 2
+};
+
 MelanosomeEvent interactWithMelanosomes(const Vec3& direction, const SkinOptics& optics, Layer layer,
                                         Rng& rng);
 
-/// One melanosome (semi-axes a ≤ c in cm): returns true if the ray is absorbed inside it.
+/// One melanosome (semi-axes a ≤ c in cm): returns true if the ray is absorbed inside it. The
+/// direction (unit) does not change the law (see above).
 bool absorbedInMelanosome(const Vec3& direction, double semiMinorCm, double semiMajorCm,
                           double interiorMuA_perCm, double nLayer, double nMelanin, Rng& rng);
 

@@ -6,14 +6,32 @@
 // ray is redrawn; a reflected ray that still points into the surface, or a refracted ray that
 // points back, meets the surface again (a new normal, a new Fresnel test), so no energy is lost.
 // After kMaxSurfaceBounces attempts the smooth macro-surface normal is used, which always ends it.
+//
+// θs is drawn by the rejection sampler of skin/polar_rejection_sampling.h (same density as
+// skin/surface_normal_sampling.h's inversion, several times cheaper); RoughSurface keeps its
+// constants for one aspect ratio, the free functions build one per call.
 #pragma once
 #include "skin/interface_crossing.h"
+#include "skin/polar_rejection_sampling.h"
 #include "skin/random.h"
 #include "skin/vector3.h"
 
 namespace hylios::skin {
 
 inline constexpr int kMaxSurfaceBounces = 64;
+
+class RoughSurface {
+ public:
+  /// Throws std::invalid_argument for s outside [1e-100, 1e10].
+  explicit RoughSurface(double aspectRatio);
+  /// See crossRoughSurface.
+  InterfaceCrossing cross(const Vec3& direction, double nIncident, double nTransmitted, Rng& rng) const;
+  /// See sampleFacingSurfaceNormal.
+  Vec3 facingNormal(const Vec3& direction, const Vec3& macroNormal, Rng& rng) const;
+
+ private:
+  SurfaceNormalPolarSampler polar_;
+};
 
 /// A ray travelling along `direction` (direction.z ≠ 0) meets the plane z = 0 going from index
 /// nIncident into nTransmitted. transmitted = true means it ends on the far side.

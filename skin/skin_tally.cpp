@@ -29,20 +29,29 @@ std::size_t SkinTally::directionBin(const Vec3& exitDirection) const {
          bin(azimuth, -kPi, kPi, options_.azimuthBins);
 }
 
+Estimate SkinTally::binomial(std::uint64_t count) const {
+  if (rays_ == 0) return {0.0, 0.0};
+  const double n = static_cast<double>(rays_);
+  const double m = static_cast<double>(count) / n;
+  if (rays_ < 2) return {m, 0.0};
+  const double variance = std::fmax(0.0, m - m * m);  // E[x²] = E[x] for 0/1 scores
+  return {m, std::sqrt(variance / (n - 1.0))};
+}
+
 void SkinTally::record(const SkinPath& path) {
   const bool surface = path.end == PathEnd::SurfaceReflection;
   const bool subsurface = path.end == PathEnd::SubsurfaceReflection;
   const bool transmitted = path.end == PathEnd::Transmitted;
   const bool absorbed = path.end == PathEnd::Absorbed;
-  total_.add(surface || subsurface ? 1.0 : 0.0);
-  surface_.add(surface ? 1.0 : 0.0);
-  subsurface_.add(subsurface ? 1.0 : 0.0);
-  transmitted_.add(transmitted ? 1.0 : 0.0);
-  absorbed_.add(absorbed ? 1.0 : 0.0);
-  melanosomeAbsorbed_.add(absorbed && path.absorbedInMelanosome ? 1.0 : 0.0);
-  eventLimited_.add(path.end == PathEnd::EventLimit ? 1.0 : 0.0);
-  events_.add(static_cast<double>(path.events));
-  for (Layer layer : kAllLayers) absorbedByLayer_[index(layer)].add(absorbed && path.layer == layer ? 1.0 : 0.0);
+  ++rays_;
+  surface_ += surface;
+  subsurface_ += subsurface;
+  transmitted_ += transmitted;
+  absorbed_ += absorbed;
+  melanosomeAbsorbed_ += absorbed && path.absorbedInMelanosome;
+  eventLimited_ += path.end == PathEnd::EventLimit;
+  events_ += path.events;
+  if (absorbed) ++absorbedByLayer_[index(path.layer)];
   if (surfaceDirections_) {
     surfaceDirections_->countPacket();
     subsurfaceDirections_->countPacket();
@@ -58,15 +67,15 @@ void SkinTally::record(const SkinPath& path) {
 }
 
 void SkinTally::merge(const SkinTally& other) {
-  total_.merge(other.total_);
-  surface_.merge(other.surface_);
-  subsurface_.merge(other.subsurface_);
-  transmitted_.merge(other.transmitted_);
-  absorbed_.merge(other.absorbed_);
-  melanosomeAbsorbed_.merge(other.melanosomeAbsorbed_);
-  eventLimited_.merge(other.eventLimited_);
-  events_.merge(other.events_);
-  for (std::size_t i = 0; i < kLayerCount; ++i) absorbedByLayer_[i].merge(other.absorbedByLayer_[i]);
+  rays_ += other.rays_;
+  surface_ += other.surface_;
+  subsurface_ += other.subsurface_;
+  transmitted_ += other.transmitted_;
+  absorbed_ += other.absorbed_;
+  melanosomeAbsorbed_ += other.melanosomeAbsorbed_;
+  eventLimited_ += other.eventLimited_;
+  events_ += other.events_;
+  for (std::size_t i = 0; i < kLayerCount; ++i) absorbedByLayer_[i] += other.absorbedByLayer_[i];
   if (surfaceDirections_) {
     surfaceDirections_->merge(*other.surfaceDirections_);
     subsurfaceDirections_->merge(*other.subsurfaceDirections_);

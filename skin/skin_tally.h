@@ -29,17 +29,17 @@ class SkinTally {
   void record(const SkinPath& path);
   void merge(const SkinTally& other);
 
-  std::uint64_t rays() const { return total_.count(); }
-  Estimate reflectance() const { return total_.estimate(); }
-  Estimate surfaceReflectance() const { return surface_.estimate(); }
-  Estimate subsurfaceReflectance() const { return subsurface_.estimate(); }
-  Estimate transmittance() const { return transmitted_.estimate(); }
-  Estimate absorptance() const { return absorbed_.estimate(); }
-  Estimate absorptance(Layer layer) const { return absorbedByLayer_[index(layer)].estimate(); }
-  Estimate melanosomeAbsorptance() const { return melanosomeAbsorbed_.estimate(); }
+  std::uint64_t rays() const { return rays_; }
+  Estimate reflectance() const { return binomial(surface_ + subsurface_); }
+  Estimate surfaceReflectance() const { return binomial(surface_); }
+  Estimate subsurfaceReflectance() const { return binomial(subsurface_); }
+  Estimate transmittance() const { return binomial(transmitted_); }
+  Estimate absorptance() const { return binomial(absorbed_); }
+  Estimate absorptance(Layer layer) const { return binomial(absorbedByLayer_[index(layer)]); }
+  Estimate melanosomeAbsorptance() const { return binomial(melanosomeAbsorbed_); }
   /// Rays that hit SkinWalk::kMaxEvents (reported, never folded into another quantity).
-  Estimate eventLimited() const { return eventLimited_.estimate(); }
-  double meanEvents() const { return events_.mean(); }
+  Estimate eventLimited() const { return binomial(eventLimited_); }
+  double meanEvents() const { return rays_ == 0 ? 0.0 : static_cast<double>(events_) / static_cast<double>(rays_); }
 
   const TallyOptions& options() const { return options_; }
   /// Fraction of rays per direction bin (flattened: polar-major), for surface or subsurface exits.
@@ -54,9 +54,15 @@ class SkinTally {
   std::size_t directionBin(const Vec3& exitDirection) const;
 
  private:
+  /// Mean and standard error of a 0/1 score that was 1 for `count` of the rays: the
+  /// RunningStatistic formula sqrt((E[x²] − E[x]²)/(N − 1)) with E[x²] = E[x] = count/N.
+  Estimate binomial(std::uint64_t count) const;
+
   TallyOptions options_;
-  RunningStatistic total_, surface_, subsurface_, transmitted_, absorbed_, melanosomeAbsorbed_, eventLimited_, events_;
-  std::array<RunningStatistic, kLayerCount> absorbedByLayer_;
+  // Each ray ends one way, so the outcomes are integer counts (exact, order-free merging).
+  std::uint64_t rays_ = 0, surface_ = 0, subsurface_ = 0, transmitted_ = 0, absorbed_ = 0,
+                melanosomeAbsorbed_ = 0, eventLimited_ = 0, events_ = 0;
+  std::array<std::uint64_t, kLayerCount> absorbedByLayer_{};
   std::optional<Histogram> surfaceDirections_, subsurfaceDirections_, transmittedDirections_, radialExits_;
 };
 

@@ -4,22 +4,21 @@
 #include <limits>
 #include <stdexcept>
 
-#include "skin/cosine_sampling.h"
 #include "skin/interface_crossing.h"
-#include "skin/melanosome_interaction.h"
+#include "skin/polar_rejection_sampling.h"
 #include "skin/rayleigh_sampling.h"
-#include "skin/rough_surface.h"
 
 namespace hylios::skin {
 namespace {
 constexpr double kAirRefractiveIndex = 1.0;
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// Free path for total coefficient mu (Eq. 1); infinite when nothing attenuates.
+/// Free path for total coefficient mu (Eq. 1); infinite when nothing attenuates. 1 − u is exact for
+/// the Rng's multiples of 2⁻⁵³, so log(1 − u) equals log1p(−u) and is cheaper.
 double sampleFreePathCm(double mu_perCm, Rng& rng) {
-  return mu_perCm > 0 ? -std::log1p(-rng.uniform()) / mu_perCm : kInfinity;
+  return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) / mu_perCm : kInfinity;
 }
+
 }  // namespace
 
 SkinWalk::SkinWalk(const SkinOptics& optics, WalkOptions options)
@@ -29,27 +28,32 @@ SkinWalk::SkinWalk(const SkinOptics& optics, WalkOptions options)
     if (index(layer) > index(options.deepestLayer)) break;
     const LayerOptics& lo = optics[layer];
     if (!(lo.thicknessCm > 0)) continue;  // empty layers take no part in the walk
+    const double muMelanosome = options.melanosomes ? lo.melanosome.mu_perCm : 0.0;
+    const double muRayleigh = options.rayleigh ? lo.muRayleigh_perCm : 0.0;
+    const double muAPlusMelanosome = lo.muATotal_perCm + muMelanosome;
+    if (muMelanosome > 0) melanosomes_[slabCount_] = MelanosomeLayer(optics, layer);
     slabs_[slabCount_++] = Slab{layer,
                                 depthCm,
                                 depthCm + lo.thicknessCm,
                                 lo.refractiveIndex,
                                 lo.muATotal_perCm,
-                                options.melanosomes ? lo.melanosome.mu_perCm : 0.0,
-                                options.rayleigh ? lo.muRayleigh_perCm : 0.0};
+                                muAPlusMelanosome,
+                                muAPlusMelanosome + muRayleigh,
+                                muAPlusMelanosome};
     depthCm += lo.thicknessCm;
   }
   if (slabCount_ == 0)
     throw std::invalid_argument("skin walk: every layer has zero thickness; there is no skin to walk in");
+  if (options.roughSurface) roughSurface_.emplace(optics.surfaceAspectRatio);
+}
+
+InterfaceCrossing SkinWalk::crossSurface(const Vec3& d, double nFrom, double nTo, Rng& rng) const {
+  return roughSurface_ ? roughSurface_->cross(d, nFrom, nTo, rng) : crossPlaneInterfaceZ(d, nFrom, nTo, rng);
 }
 
 SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
   SkinPath path;
-  const double roughness = optics_.surfaceAspectRatio;
-  auto crossSurface = [&](const Vec3& d, double nFrom, double nTo) {
-    return options_.roughSurface ? crossRoughSurface(d, nFrom, nTo, roughness, rng)
-                                   : crossPlaneInterfaceZ(d, nFrom, nTo, rng);
-  };
-  const InterfaceCrossing entry = crossSurface(incidentDirection, kAirRefractiveIndex, slabs_[0].refractiveIndex);
+  const InterfaceCrossing entry = crossSurface(incidentDirection, kAirRefractiveIndex, slabs_[0].refractiveIndex, rng);
   path.events = 1;
   if (!entry.transmitted) {
     path.end = PathEnd::SurfaceReflection;
@@ -63,8 +67,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
   while (path.events < kMaxEvents) {
     ++path.events;
     const Slab& slab = slabs_[k];
-    const double muRayleigh = rayleighAvailable ? slab.muRayleigh_perCm : 0.0;
-    const double muTotal = slab.muA_perCm + slab.muMelanosome_perCm + muRayleigh;
+    const double muTotal = rayleighAvailable ? slab.muTotalWithRayleigh_perCm : slab.muTotalWithoutRayleigh_perCm;
     const double toBoundaryCm = d.z > 0   ? (slab.bottomCm - position.z) / d.z
                                 : d.z < 0 ? (slab.topCm - position.z) / d.z
                                           : kInfinity;
@@ -77,8 +80,8 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
         path.layer = slab.layer;
         return path;
       }
-      if (pick < slab.muA_perCm + slab.muMelanosome_perCm) {
-        const MelanosomeEvent event = interactWithMelanosomes(d, optics_, slab.layer, rng);
+      if (pick < slab.muAPlusMelanosome_perCm) {
+        const MelanosomeEvent event = melanosomes_[k].interact(d, rng);
         if (event.absorbed) {
           path.end = PathEnd::Absorbed;
           path.layer = slab.layer;
@@ -88,9 +91,10 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
         d = event.direction;
         continue;
       }
-      const double thetaR = sampleRayleighPolar(rng.uniform());  // Algorithm 1's density
-      const double phi = kTwoPi * rng.uniform();
-      d = perturbDirection(d, std::cos(thetaR), phi);
+      const double cosR = sampleRayleighCos(rng.uniform());  // Algorithm 1's density
+      const double sinR = std::sqrt((1.0 - cosR) * (1.0 + cosR));
+      const Azimuth phi = sampleAzimuth(rng);
+      d = directionAbout(d, cosR, sinR, phi.cosPhi, phi.sinPhi);
       rayleighAvailable = false;
       continue;
     }
@@ -98,7 +102,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
     position += d * toBoundaryCm;
     position.z = d.z > 0 ? slab.bottomCm : slab.topCm;
     if (d.z < 0 && k == 0) {  // the skin surface, from inside
-      const InterfaceCrossing exit = crossSurface(d, slab.refractiveIndex, kAirRefractiveIndex);
+      const InterfaceCrossing exit = crossSurface(d, slab.refractiveIndex, kAirRefractiveIndex, rng);
       if (exit.transmitted) {
         path.end = PathEnd::SubsurfaceReflection;
         path.exitDirection = exit.direction;
@@ -111,8 +115,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
     }
     if (d.z > 0 && k + 1 == slabCount_) {
       if (options_.deepestLayer == Layer::ReticularDermis) {  // dermis–hypodermis: reflectance 1, diffuse
-        const double u1 = rng.uniform(), u2 = rng.uniform();
-        const Vec3 local = sampleCosineHemisphere(u1, u2);
+        const Vec3 local = sampleCosineHemisphereByDisk(rng);
         d = Vec3{local.x, local.y, -local.z};
         continue;
       }

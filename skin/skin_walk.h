@@ -16,9 +16,12 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "skin/layer.h"
+#include "skin/melanosome_interaction.h"
 #include "skin/random.h"
+#include "skin/rough_surface.h"
 #include "skin/skin_optics.h"
 #include "skin/vector3.h"
 
@@ -61,7 +64,8 @@ class SkinWalk {
   /// Hard bound on events per ray; the walk ends with PathEnd::EventLimit past it.
   static constexpr std::uint32_t kMaxEvents = 1u << 20;
 
-  /// Throws std::invalid_argument when no layer down to options.deepestLayer has thickness.
+  /// Throws std::invalid_argument when no layer down to options.deepestLayer has thickness, or
+  /// when a process that is switched on has invalid constants (surface aspect ratio, melanosomes).
   explicit SkinWalk(const SkinOptics& optics, WalkOptions options = {});
 
   /// Follows one ray arriving from air along `incidentDirection` (z > 0).
@@ -70,17 +74,23 @@ class SkinWalk {
   const SkinOptics& optics() const { return optics_; }
 
  private:
+  /// Per-layer constants, computed once per walk (the hot loop only reads them).
   struct Slab {
     Layer layer;
     double topCm, bottomCm;
     double refractiveIndex;
     double muA_perCm;
-    double muMelanosome_perCm;
-    double muRayleigh_perCm;
+    double muAPlusMelanosome_perCm;     ///< absorption + melanosome coefficients
+    double muTotalWithRayleigh_perCm;   ///< + Rayleigh (first scattering of a pass)
+    double muTotalWithoutRayleigh_perCm;
   };
+  InterfaceCrossing crossSurface(const Vec3& direction, double nFrom, double nTo, Rng& rng) const;
+
   SkinOptics optics_;
   WalkOptions options_;
   std::array<Slab, kLayerCount> slabs_{};
+  std::array<MelanosomeLayer, kLayerCount> melanosomes_{};  ///< by slab, where it has melanosomes
+  std::optional<RoughSurface> roughSurface_;                ///< set when options.roughSurface
   std::size_t slabCount_ = 0;  ///< layers of nonzero thickness, top to bottom
 };
 

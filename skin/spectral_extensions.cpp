@@ -104,15 +104,8 @@ void requireOrdered(double low, double high, const char* what, const std::filesy
     throw SpectralDataError(fmt::format("{}: {} needs {} < {}", file.string(), what, low, high));
 }
 
-}  // namespace
-
-SpectralExtensions SpectralExtensions::load(const std::filesystem::path& tomlFile) {
-  toml::table root;
-  try {
-    root = toml::parse_file(tomlFile.string());
-  } catch (const toml::parse_error& e) {
-    throw SpectralDataError(fmt::format("{}: {}", position(tomlFile, e.source()), e.description()));
-  }
+/// Reads every section of a parsed extensions document; `tomlFile` names it in messages.
+SpectralExtensions readExtensions(const toml::table& root, const std::filesystem::path& tomlFile) {
   rejectUnknownSections(root, tomlFile);
   SpectralExtensions x;
 
@@ -159,6 +152,30 @@ SpectralExtensions SpectralExtensions::load(const std::filesystem::path& tomlFil
   x.dna = SectionReader(root, "band.dna", tomlFile).band();
   x.urocanicAcid = SectionReader(root, "band.urocanic_acid", tomlFile).band();
   return x;
+}
+
+}  // namespace
+
+SpectralExtensions SpectralExtensions::load(const std::filesystem::path& tomlFile) {
+  toml::table root;
+  try {
+    root = toml::parse_file(tomlFile.string());
+  } catch (const toml::parse_error& e) {
+    throw SpectralDataError(fmt::format("{}: {}", position(tomlFile, e.source()), e.description()));
+  }
+  return readExtensions(root, tomlFile);
+}
+
+SpectralExtensions SpectralExtensions::parse(const std::string& tomlText,
+                                             const std::filesystem::path& sourceName) {
+  toml::table root;
+  try {
+    root = toml::parse(tomlText, sourceName.string());
+  } catch (const toml::parse_error& e) {
+    throw SpectralDataError(
+        fmt::format("{}: {}", position(sourceName, e.source()), e.description()));
+  }
+  return readExtensions(root, sourceName);
 }
 
 }  // namespace hylios::skin

@@ -4,6 +4,7 @@
 // Every key is required and unknown keys are errors (file:line:column).
 #pragma once
 #include <filesystem>
+#include <string>
 
 #include "skin/absorption_band.h"
 
@@ -38,6 +39,9 @@ struct SpectralExtensions {
   /// Throws SpectralDataError (file:line:column where known) on a parse error, a missing, unknown
   /// or non-numeric key, or inconsistent values.
   static SpectralExtensions load(const std::filesystem::path& tomlFile);
+  /// Parses TOML text exactly as load does; `sourceName` stands for the file in messages.
+  static SpectralExtensions parse(const std::string& tomlText,
+                                  const std::filesystem::path& sourceName);
 };
 
 }  // namespace hylios::skin

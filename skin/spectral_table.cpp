@@ -78,7 +78,11 @@ SpectralTable SpectralTable::loadCsv(const std::filesystem::path& file,
   const std::string name = file.string();
   std::ifstream in(file);
   if (!in) throw SpectralTableError(fmt::format("{}: cannot open the spectral table file", name));
+  return parseCsv(in, name, duplicates, missing);
+}
 
+SpectralTable SpectralTable::parseCsv(std::istream& in, const std::string& name,
+                                      DuplicateWavelengths duplicates, MissingValues missing) {
   std::vector<std::string> header;
   std::vector<ParsedRow> rows;
   std::string line;

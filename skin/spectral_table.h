@@ -7,6 +7,7 @@
 #pragma once
 #include <cstddef>
 #include <filesystem>
+#include <iosfwd>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -37,6 +38,11 @@ class SpectralTable {
   static SpectralTable loadCsv(const std::filesystem::path& file,
                                DuplicateWavelengths duplicates = DuplicateWavelengths::Reject,
                                MissingValues missing = MissingValues::Reject);
+  /// Parses CSV text from `in` exactly as loadCsv does; `sourceName` stands for the file in
+  /// messages and in sourceName().
+  static SpectralTable parseCsv(std::istream& in, const std::string& sourceName,
+                                DuplicateWavelengths duplicates = DuplicateWavelengths::Reject,
+                                MissingValues missing = MissingValues::Reject);
 
   /// A table from samples (`columns[c][row]`); `sourceName` appears in error messages.
   /// Throws SpectralTableError unless wavelengths strictly ascend and every column matches them.

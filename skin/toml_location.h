@@ -2,9 +2,10 @@
 // 1-based lines and columns in a source_region, 0 where it has none; these helpers turn that into
 // "file:line:col" and name a node's type in words ("an integer", "a string").
 #pragma once
+#include <toml++/toml.h>
+
 #include <string>
 #include <string_view>
-#include <toml++/toml.h>
 
 namespace hylios::skin {
 

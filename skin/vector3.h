@@ -45,4 +45,10 @@ inline Vec3 perturbDirection(const Vec3& axis, double cosTheta, double phi) {
   return Frame(axis).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
 }
 
+/// The same from the cosines and sines of θ and φ (no trigonometric calls).
+inline Vec3 directionAbout(const Vec3& axis, double cosTheta, double sinTheta, double cosPhi,
+                           double sinPhi) {
+  return Frame(axis).toWorld({sinTheta * cosPhi, sinTheta * sinPhi, cosTheta});
+}
+
 }  // namespace hylios::skin

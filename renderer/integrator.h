@@ -1,0 +1,97 @@
+// The spectral path tracer: one wavelength per camera path (a film channel drawn by
+// Film::sampleChannel), next-event estimation with multiple importance sampling (power heuristic,
+// β = 2) for area and environment lights, delta point/spot lights by next-event estimation only.
+//
+// Materials (MaterialDesc):
+//   diffuse    — Lambertian, reflectance spectrum ρ(λ) in [0, 1]; cosine-sampled continuation;
+//                two-sided.
+//   dielectric — smooth interface of index n (air outside): Fresnel reflection or refraction chosen
+//                in proportion; refraction scales radiance by (n_i/n_t)² (pbrt's radiance mode).
+//   skin       — the HyLIoS walk (renderer/skin_material.h, where the estimator is documented).
+// max_depth counts scattering vertices (a skin walk is one): max_depth = 1 is direct lighting.
+// No Russian roulette: paths end at max_depth, by absorption, or by leaving the scene.
+//
+// Determinism: sample s of pixel p (p = y·width + x) draws every number from
+// skin::Rng(seed, p, s), and the pixels are split into 16×16 tiles, each written by one task; the
+// image is identical for any thread count (tbb::global_control chooses it).
+#pragma once
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/camera.h"
+#include "renderer/embree_scene.h"
+#include "renderer/film.h"
+#include "renderer/lights.h"
+#include "renderer/scene.h"
+#include "renderer/skin_material.h"
+#include "skin/random.h"
+
+namespace hylios {
+
+/// Counters of a render (sums over all paths; order-independent, so deterministic).
+struct RenderStats {
+  std::uint64_t paths = 0;
+  std::uint64_t skinWalks = 0;
+  std::uint64_t skinAbsorbed = 0;
+  std::uint64_t skinSurfaceExits = 0;
+  std::uint64_t skinSubsurfaceExits = 0;
+  std::uint64_t skinEventLimited = 0;       ///< walks stopped at SkinWalk::kMaxEvents (path ended)
+  std::uint64_t exitFallbacks = 0;          ///< subsurface exits not projected onto the surface
+  std::uint64_t belowSurface = 0;           ///< continuations below the geometric surface (path ended)
+  void add(const RenderStats& o);
+};
+
+struct RenderOptions {
+  bool progressBar = true;
+  std::string label = "render";
+};
+
+class Integrator {
+ public:
+  /// Prepares geometry, lights, materials and the skin walks for the given channel wavelengths.
+  /// Throws SceneError for anything wrong in the scene or the files it refers to.
+  Integrator(const SceneDesc& scene, const std::vector<double>& channelWavelengths);
+  ~Integrator();
+
+  /// Renders film.desc().samplesPerPixel samples per pixel into `film` (whose channels must be
+  /// the wavelengths given to the constructor).
+  RenderStats render(Film& film, const RenderOptions& options = {}) const;
+
+  /// Radiance along `ray` at channel `channel` (one path).
+  double radiance(const Ray& ray, std::size_t channel, skin::Rng& rng, RenderStats& stats) const;
+
+  const Camera& camera() const { return *camera_; }
+  const EmbreeScene& geometry() const { return *geometry_; }
+  const LightSet& lights() const { return *lights_; }
+  /// Degenerate triangles skipped over all meshes, with a line per mesh in `report`.
+  std::size_t skippedDegenerateTriangles(std::string* report = nullptr) const;
+
+ private:
+  struct Material {
+    MaterialDesc::Kind kind;
+    std::vector<double> reflectance;       ///< diffuse, per channel
+    double refractiveIndex = 1.5;          ///< dielectric
+    std::unique_ptr<SkinMaterial> skin;
+  };
+  /// Next-event estimate at `point` for a lobe density `lobe(ω)` (per sr, cos included);
+  /// deltaOnly: only point/spot lights.
+  template <typename Lobe>
+  double directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal, std::size_t channel,
+                     skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const;
+  Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction, double tMax) const;
+
+  SceneDesc scene_;
+  std::vector<double> wavelengths_;
+  std::unique_ptr<EmbreeScene> geometry_;
+  std::unique_ptr<LightSet> lights_;
+  std::unique_ptr<Camera> camera_;
+  std::vector<Material> materials_;
+  std::vector<std::size_t> materialOfShape_;
+  double rayOffset_ = 1e-5;
+};
+
+}  // namespace hylios

@@ -1,0 +1,55 @@
+// hylios render: one scene file → a spectral OpenEXR plus PNG previews (renderer/film_output.h).
+#include <iostream>
+#include <memory>
+
+#include "renderer/commands.h"
+#include "renderer/film_output.h"
+#include "renderer/render_job.h"
+#include "renderer/scene_file.h"
+
+namespace hylios {
+namespace {
+
+struct RenderArguments {
+  std::string scene;
+  std::string out;
+  int spp = 0;
+  std::string resolution;
+  std::uint64_t seed = 0;
+  bool seedGiven = false;
+  int threads = 0;
+};
+
+void runRender(const RenderArguments& args) {
+  RenderSettings settings;
+  if (args.spp > 0) settings.samplesPerPixel = args.spp;
+  if (!args.resolution.empty()) {
+    const auto [w, h] = parseResolution(args.resolution);
+    settings.width = w;
+    settings.height = h;
+  }
+  if (args.seedGiven) settings.seed = args.seed;
+  settings.threads = args.threads;
+  const SceneDesc scene = applyRenderSettings(loadSceneFile(args.scene), settings);
+  const RenderResult result = renderScene(scene, settings, &std::cout);
+  for (const auto& path : writeFilmOutputs(*result.film, args.out)) std::cout << "wrote " << path.string() << "\n";
+}
+
+}  // namespace
+
+void registerRenderCommand(CLI::App& app) {
+  auto args = std::make_shared<RenderArguments>();
+  CLI::App* command = app.add_subcommand("render", "Render a scene file to a spectral OpenEXR and PNG previews");
+  command->add_option("scene", args->scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+  command->add_option("--out", args->out, "OpenEXR file to write (previews go beside it)")->required();
+  command->add_option("--spp", args->spp, "Samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
+  command->add_option("--resolution", args->resolution, "WxH in pixels (default: the scene's)");
+  auto* seed = command->add_option("--seed", args->seed, "Random seed (default: the scene's)");
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->callback([args, seed] {
+    args->seedGiven = seed->count() > 0;
+    runRender(*args);
+  });
+}
+
+}  // namespace hylios

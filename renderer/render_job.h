@@ -1,0 +1,42 @@
+// Rendering one scene file from the command line (shared by `hylios render` and `hylios figure`):
+// load and validate the scene, apply the command-line overrides, prepare the integrator, render
+// with the requested thread count, and report timing and counters.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "renderer/film.h"
+#include "renderer/integrator.h"
+#include "renderer/scene.h"
+
+namespace hylios {
+
+struct RenderSettings {
+  std::optional<int> samplesPerPixel;
+  std::optional<int> width, height;
+  std::optional<std::uint64_t> seed;
+  int threads = 0;          ///< 0: all cores
+  bool progressBar = true;
+};
+
+struct RenderResult {
+  std::unique_ptr<Film> film;
+  RenderStats stats;
+  double prepareSeconds = 0;  ///< scene loading, BVH build, skin-walk precomputation
+  double renderSeconds = 0;
+};
+
+/// "WxH" → (W, H); throws std::invalid_argument otherwise.
+std::pair<int, int> parseResolution(const std::string& text);
+
+/// The scene with the settings applied (spp, resolution, seed).
+SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings);
+
+/// Renders `scene` (after applyRenderSettings); writes a short report to `log` (may be null).
+RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings, std::ostream* log);
+
+}  // namespace hylios

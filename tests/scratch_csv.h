@@ -1,0 +1,58 @@
+// Test support for the command tests: a scratch folder removed afterwards, a CSV reader, and a
+// runner that parses one command line with a command registered on a fresh CLI11 app.
+#pragma once
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hylios::test {
+
+struct ScratchFolder {
+  std::filesystem::path path;
+  explicit ScratchFolder(const std::string& name)
+      : path(std::filesystem::temp_directory_path() / ("hylios-" + name + "-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+/// Rows of comma-separated fields (no quoting: the hylios CSVs hold numbers and names only).
+inline std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream stream(line);
+    std::string field;
+    while (std::getline(stream, field, ',')) fields.push_back(field);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+/// Parses "name arguments…" with the command registered by `registerCommand`; the command's
+/// callback runs (and throws) inside.
+inline void runCommandLine(const std::function<void(CLI::App&)>& registerCommand, const std::string& commandLine) {
+  CLI::App app;
+  registerCommand(app);
+  app.parse(commandLine, false);
+}
+
+/// Index of `name` in a CSV header row, or the row's size when missing.
+inline std::size_t columnOf(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return i;
+  return header.size();
+}
+
+}  // namespace hylios::test
