@@ -22,12 +22,10 @@ Vec3 normalAtImage(const Vec3& p, double inverseAspect) {
   const Vec3 gradient{p.x, p.y, p.z * inverseAspect};
   return gradient * (1.0 / std::sqrt(dot(gradient, gradient)));
 }
-
 }  // namespace
 
 MelanosomeLayer::MelanosomeLayer(double semiMinor, double semiMajor, double interiorMuA,
-                                 double nLayer, double nMelanin)
-{
+                                 double nLayer, double nMelanin) {
   checkProlateSpheroid({semiMinor, semiMajor});
   if (!(interiorMuA >= 0 && std::isfinite(interiorMuA)))
     throw std::invalid_argument("melanosome interaction: interior absorption coefficient " +

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "skin/cosine_sampling.h"
 #include "skin/exponential_polar_sampling.h"
 #include "skin/surface_normal_sampling.h"
 #include "tests/chi2.h"
@@ -81,6 +82,25 @@ TEST(SurfaceNormalRejection, RejectsAspectRatiosOutsideTheSamplersRange) {
   EXPECT_THROW(SurfaceNormalPolarSampler(0.0), std::invalid_argument);
   EXPECT_THROW(SurfaceNormalPolarSampler(1e11), std::invalid_argument);
   EXPECT_THROW(SurfaceNormalPolarSampler(std::nan("")), std::invalid_argument);
+}
+
+TEST(DiskSamplers, AzimuthIsUniformAndMalleyDirectionsAreCosineWeighted) {
+  Rng rng(13);
+  std::vector<double> azimuths(kSamples), polars(kSamples);
+  for (int i = 0; i < kSamples; ++i) {
+    const Azimuth a = sampleAzimuth(rng);
+    ASSERT_NEAR(a.cosPhi * a.cosPhi + a.sinPhi * a.sinPhi, 1.0, 1e-14);
+    azimuths[static_cast<std::size_t>(i)] = std::atan2(a.sinPhi, a.cosPhi);
+    const Vec3 d = sampleCosineHemisphereByDisk(rng);
+    ASSERT_NEAR(dot(d, d), 1.0, 1e-14);
+    ASSERT_GT(d.z, 0.0);
+    polars[static_cast<std::size_t>(i)] = std::acos(d.z);
+  }
+  const auto uniformAzimuth = [](double) { return 1.0 / (2.0 * kPi); };
+  EXPECT_TRUE(test::chi2Accepts(test::chi2Test1D(azimuths, uniformAzimuth, test::uniformEdges(-kPi, kPi, 60))));
+  const auto cosine = [](double t) { return cosinePolarDensity(t); };
+  EXPECT_TRUE(test::chi2Accepts(
+      test::chi2Test1D(polars, cosine, test::equalProbabilityEdges(cosine, 0.0, kHalfPi, 50))));
 }
 
 }  // namespace
