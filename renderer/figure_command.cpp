@@ -55,7 +55,9 @@ void runFigure(const FigureArguments& args) {
     columns = std::max(columns, previews);
   }
   const fs::path sheet = fs::path(args.out) / "contact_sheet.png";
-  writeContactSheet(panels, labels, sheet, columns);
+  // One row per scene with its previews side by side; scenes with a single preview each (the
+  // paper's figures) make one row of panels, like the paper's.
+  writeContactSheet(panels, labels, sheet, columns == 1 ? static_cast<int>(panels.size()) : columns);
   std::cout << "wrote " << sheet.string() << "\n";
 }
 

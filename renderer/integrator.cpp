@@ -261,6 +261,7 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   RenderStats total;
   std::mutex totalMutex;
   const std::uint64_t seed = scene_.integrator.seed;
+  constexpr std::uint64_t kChannelRotationStream = ~std::uint64_t{0};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles, 1), [&](const tbb::blocked_range<std::size_t>& range) {
     RenderStats stats;
     for (std::size_t tile = range.begin(); tile != range.end(); ++tile) {
@@ -270,9 +271,16 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
         for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
           const std::uint64_t pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) +
                                       static_cast<std::uint64_t>(x);
+          // Channels are stratified over the pixel's samples (sample s takes the s-th of spp equal
+          // slices of [0, 1), jittered), with a per-pixel rotation (Cranley–Patterson) drawn from
+          // its own stream: with spp ≥ the number of channels every channel of the pixel gets a
+          // sample, and no channel is skipped in the same way for every pixel.
+          const double rotation = skin::Rng(seed, pixel, kChannelRotationStream).uniform();
           for (int s = 0; s < spp; ++s) {
             skin::Rng rng(seed, pixel, static_cast<std::uint64_t>(s));
-            const std::size_t channel = film.sampleChannel(rng.uniform());
+            double u = (static_cast<double>(s) + rng.uniform()) / static_cast<double>(spp) + rotation;
+            u -= std::floor(u);
+            const std::size_t channel = film.sampleChannel(u < 1.0 ? u : skin::kOneMinusEpsilon);
             const double px = x + rng.uniform(), py = y + rng.uniform();
             const double lu = rng.uniform(), lv = rng.uniform();
             film.addSample(x, y, channel, radiance(camera_->generateRay(px, py, lu, lv), channel, rng, stats));

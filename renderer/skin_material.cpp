@@ -150,12 +150,19 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
   if (!(offsetLength > 0)) return out;
   const glm::dvec3 planePoint = hit.position + offset;
   const double probe = 4 * offsetLength;
-  for (const double side : {1.0, -1.0}) {  // from above looking down, then from below looking up
-    const Ray ray{planePoint + ns * (side * probe), ns * (-side), 2 * probe};
+  // Probes: from above looking down, from below looking up (both along the entry normal; exact on
+  // a plane), then — for offsets beyond the local curvature, where the normal line misses the
+  // surface — from the tangent-plane point towards a point one offset length below the entry.
+  const glm::dvec3 below = hit.position - ns * offsetLength;
+  const Ray probes[3] = {{planePoint + ns * probe, -ns, 2 * probe},
+                         {planePoint - ns * probe, ns, 2 * probe},
+                         {planePoint, glm::normalize(below - planePoint), glm::length(below - planePoint)}};
+  for (const Ray& ray : probes) {
     const std::optional<SurfaceHit> found = geometry.intersect(ray);
     if (!found || materialOfShape[found->shape] != materialIndex_) continue;
     out.point = found->position;
-    const bool flip = glm::dot(found->geometricNormal, ng) < 0;
+    // Same side convention as at the entry (front faces by winding, or outward for spheres).
+    const bool flip = glm::dot(direction, hit.geometricNormal) > 0;
     out.geometricNormal = flip ? -found->geometricNormal : found->geometricNormal;
     out.shadingNormal = flip ? -found->shadingNormal : found->shadingNormal;
     return out;

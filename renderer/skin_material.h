@@ -26,8 +26,10 @@
 //     material over cosθ_c). Contribution: g(ω_l)·I/d²; in expectation R_s·g·I/d².
 //   SubsurfaceReflection (probability R_ss(ω_c)) at lateral offset (Δx, Δy) cm — the exit point x_o
 //     is x + (Δx·t + Δy·b)/unitCm projected back onto the skin surface by probe rays along ∓n
-//     (from 4|Δ| above, then from 4|Δ| below, accepting only shapes with this material); if both
-//     miss, x_o = x (counted in RenderStats::exitFallbacks). The exit lobe is modelled as
+//     (from 4|Δ| above, then from 4|Δ| below), then — for offsets beyond the local curvature —
+//     towards the point |Δ| below x; only shapes of this material count. If all miss, x_o = x
+//     (counted in RenderStats::exitFallbacks). The walk itself is plane-parallel: offsets comparable
+//     to the radius of curvature (millimetres to centimetres in the near IR) are approximations. The exit lobe is modelled as
 //     Lambertian about the shading normal n_o at x_o: q(ω) = cosθ_o/π. Light is estimated at x_o by
 //     next-event estimation with q (all lights) plus a continuation along a direction sampled from
 //     q, the two combined by the power heuristic (delta lights: NEE only). The walk's own exit
