@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Builds hylios (installing dependencies as needed) and runs the default job into ./out:
-# the per-layer optical coefficients of specimen S1 over 250–2500 nm, as CSV and plot.
+# Builds hylios (installing dependencies as needed) and renders the default scene into ./out:
+# the paper's Figure 1 — a lightly pigmented head with freckles at 365 nm (pseudo-colour), in the
+# visible (sRGB) and at 1100 nm (pseudo-colour) — as spectral EXRs, PNG previews and a contact
+# sheet, at a modest resolution (pass e.g. --resolution 512x512 --spp 64 for the full one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-mkdir -p out
-./build/hylios coefficients --specimen S1 --wavelengths 250:2500:5 \
-  --out out/s1_coefficients.csv --plot out/s1_coefficients.png
-echo "wrote out/s1_coefficients.csv and out/s1_coefficients.png"
+./build/hylios figure scenes/figure01_uv365.toml scenes/figure01_visible.toml scenes/figure01_ir1100.toml \
+  --out out/figure01 --resolution 256x256 --spp 32 "$@"
+echo "open out/figure01/contact_sheet.png"
