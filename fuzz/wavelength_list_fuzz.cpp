@@ -1,8 +1,10 @@
 // libFuzzer harness: parseWavelengthList (`--wavelengths`) on arbitrary bytes. Bad input must
-// throw a std::exception; an accepted list is non-empty, at most a million entries, finite and > 0.
+// throw a std::exception; an accepted list is non-empty, at most a million entries, finite and
+// > 0, and a start:stop:step range strictly ascends.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <vector>
 
@@ -20,5 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::require(!wavelengths.empty() && wavelengths.size() <= 1000000,
                 "between 1 and a million wavelengths");
   for (double w : wavelengths) fuzz::require(std::isfinite(w) && w > 0, "finite and > 0 nm");
+  // A start:stop:step range is a grid: its wavelengths must strictly ascend (no repeats).
+  const bool isRange = std::memchr(data, ':', size) != nullptr;
+  for (std::size_t i = 1; isRange && i < wavelengths.size(); ++i)
+    fuzz::require(wavelengths[i] > wavelengths[i - 1], "a range strictly ascends");
   return 0;
 }

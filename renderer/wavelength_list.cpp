@@ -41,7 +41,12 @@ std::vector<double> parseRange(const std::string& text) {
   const double count = std::floor((stop - start) / step + 1e-9) + 1;
   if (count > 1e6) fail(text, "more than a million wavelengths");
   std::vector<double> wavelengths;
-  for (long i = 0; i < static_cast<long>(count); ++i) wavelengths.push_back(start + static_cast<double>(i) * step);
+  for (long i = 0; i < static_cast<long>(count); ++i) {
+    wavelengths.push_back(start + static_cast<double>(i) * step);
+    // A step below the spacing of doubles near start would repeat wavelengths.
+    if (i > 0 && !(wavelengths.back() > wavelengths[wavelengths.size() - 2]))
+      fail(text, "step is too small to separate wavelengths near " + parts[0]);
+  }
   return wavelengths;
 }
 

@@ -23,5 +23,5 @@ jobs=$(nproc 2>/dev/null || echo 2)
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHYLIOS_FUZZ=ON \
   -DHYLIOS_BUILD_TESTS=OFF -DHYLIOS_BUILD_BENCHMARKS=OFF -DHYLIOS_FUZZ_SECONDS="$seconds" \
   "$@" >/dev/null
-cmake --build "$build" -j"$jobs"
+cmake --build "$build" -j"$jobs" --target hylios_fuzzers
 ctest --test-dir "$build" -L fuzz -j"$jobs" --output-on-failure

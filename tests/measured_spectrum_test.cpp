@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace {
 const std::string kNcsu = std::string(HYLIOS_SOURCE_DIR) + "/tests/data/validation/ncsu_vrhel1994_skin.csv";
@@ -44,4 +45,19 @@ TEST(MeasuredSpectrum, ErrorsSayWhereAndWhat) {
   const auto bad = std::filesystem::temp_directory_path() / "hylios_measured_bad.csv";
   std::ofstream(bad) << "wavelength_nm,r\n400,0.1\n410,abc\n";
   expectError(bad.string() + ":r", ":3: 'abc' is not a finite number");
+}
+
+TEST(MeasuredSpectrum, ParsesFromAStreamWithTheGivenName) {
+  std::istringstream csv("wavelength_nm,\"r, quoted\",q\r\n400,0.1,5\r\n410,0.3,6\r\n");
+  const auto s = hylios::parseMeasuredSpectrum(csv, "2", "inline.csv");
+  EXPECT_EQ(s.label, "r, quoted");
+  EXPECT_NEAR(s.at(405.0), 0.2, 1e-15);
+  std::istringstream bad("wavelength_nm,r\n400,0.1\n400,0.2\n");
+  try {
+    hylios::parseMeasuredSpectrum(bad, "r", "inline.csv");
+    FAIL() << "repeated wavelength accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("inline.csv:3: wavelengths must ascend"), std::string::npos)
+        << e.what();
+  }
 }

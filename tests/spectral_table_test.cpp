@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace hylios::skin {
@@ -156,6 +157,20 @@ TEST_F(SpectralTableTest, ConstructorValidatesSamples) {
   EXPECT_THROW(SpectralTable("x", {"v"}, {1.0, 2.0}, {{1.0}}), SpectralTableError);
   EXPECT_THROW(SpectralTable("x", {"v", "w"}, {1.0}, {{1.0}}), SpectralTableError);
   EXPECT_THROW(SpectralTable("x", {"v"}, {}, {{}}), SpectralTableError);
+}
+
+TEST_F(SpectralTableTest, ParsesFromAStreamWithTheGivenName) {
+  std::istringstream csv("wavelength_nm,v\n400,1\n410,3\n");
+  const SpectralTable t = SpectralTable::parseCsv(csv, "inline.csv");
+  EXPECT_EQ(t.sourceName(), "inline.csv");
+  EXPECT_DOUBLE_EQ(t.interpolate(0, 405.0), 2.0);
+  std::istringstream bad("wavelength_nm,v\n400,1\n390,3\n");
+  try {
+    SpectralTable::parseCsv(bad, "inline.csv");
+    FAIL() << "descending wavelengths accepted";
+  } catch (const SpectralTableError& e) {
+    EXPECT_NE(std::string(e.what()).find("inline.csv:3:"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -42,4 +42,7 @@ TEST(WavelengthList, ErrorsNameTheProblem) {
   expectError("365,,550", "empty value");
   expectError("nan", "not finite");
   expectError("", "no wavelengths given");
+  // Found by fuzz/wavelength_list_fuzz: 1000 + i·1e-13 repeats values (doubles near 1000 are
+  // 1.1e-13 apart), so the range would list the same wavelength twice.
+  expectError("1000:1000.000000000001:1e-13", "step is too small to separate wavelengths");
 }
