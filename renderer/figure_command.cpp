@@ -24,14 +24,7 @@ struct FigureArguments {
 };
 
 void runFigure(const FigureArguments& args) {
-  RenderSettings settings;
-  if (args.spp > 0) settings.samplesPerPixel = args.spp;
-  if (!args.resolution.empty()) {
-    const auto [w, h] = parseResolution(args.resolution);
-    settings.width = w;
-    settings.height = h;
-  }
-  settings.threads = args.threads;
+  const RenderSettings settings = renderSettingsFromOptions(args.spp, args.resolution, args.threads);
   // Parse every scene first, so a typo in the last one fails before hours of rendering.
   std::vector<SceneDesc> scenes;
   for (const auto& file : args.scenes) scenes.push_back(applyRenderSettings(loadSceneFile(file), settings));

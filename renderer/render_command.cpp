@@ -21,15 +21,8 @@ struct RenderArguments {
 };
 
 void runRender(const RenderArguments& args) {
-  RenderSettings settings;
-  if (args.spp > 0) settings.samplesPerPixel = args.spp;
-  if (!args.resolution.empty()) {
-    const auto [w, h] = parseResolution(args.resolution);
-    settings.width = w;
-    settings.height = h;
-  }
+  RenderSettings settings = renderSettingsFromOptions(args.spp, args.resolution, args.threads);
   if (args.seedGiven) settings.seed = args.seed;
-  settings.threads = args.threads;
   const SceneDesc scene = applyRenderSettings(loadSceneFile(args.scene), settings);
   const RenderResult result = renderScene(scene, settings, &std::cout);
   for (const auto& path : writeFilmOutputs(*result.film, args.out)) std::cout << "wrote " << path.string() << "\n";

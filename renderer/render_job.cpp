@@ -69,4 +69,16 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   return result;
 }
 
+RenderSettings renderSettingsFromOptions(int spp, const std::string& resolution, int threads) {
+  RenderSettings settings;
+  if (spp > 0) settings.samplesPerPixel = spp;
+  if (!resolution.empty()) {
+    const auto [w, h] = parseResolution(resolution);
+    settings.width = w;
+    settings.height = h;
+  }
+  settings.threads = threads;
+  return settings;
+}
+
 }  // namespace hylios

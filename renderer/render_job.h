@@ -33,6 +33,10 @@ struct RenderResult {
 /// "WxH" → (W, H); throws std::invalid_argument otherwise.
 std::pair<int, int> parseResolution(const std::string& text);
 
+/// Settings from the options `render` and `figure` share: spp (0 = the scene's), resolution
+/// ("" = the scene's, else WxH) and threads (0 = all cores).
+RenderSettings renderSettingsFromOptions(int spp, const std::string& resolution, int threads);
+
 /// The scene with the settings applied (spp, resolution, seed).
 SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings);
 

@@ -61,6 +61,14 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
     return path;
   }
   Vec3 position{0, 0, 0};
+  // Ends the walk with the ray leaving the skin at `position` along `direction` (outside it).
+  auto leave = [&path, &position](PathEnd end, const Vec3& direction) {
+    path.end = end;
+    path.exitDirection = direction;
+    path.exitOffsetXCm = position.x;
+    path.exitOffsetYCm = position.y;
+    return path;
+  };
   Vec3 d = entry.direction;
   std::size_t k = 0;
   bool rayleighAvailable = true;  // Rayleigh acts at most once per pass through the layer (Sec. 4.2.1)
@@ -103,13 +111,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
     position.z = d.z > 0 ? slab.bottomCm : slab.topCm;
     if (d.z < 0 && k == 0) {  // the skin surface, from inside
       const InterfaceCrossing exit = crossSurface(d, slab.refractiveIndex, kAirRefractiveIndex, rng);
-      if (exit.transmitted) {
-        path.end = PathEnd::SubsurfaceReflection;
-        path.exitDirection = exit.direction;
-        path.exitOffsetXCm = position.x;
-        path.exitOffsetYCm = position.y;
-        return path;
-      }
+      if (exit.transmitted) return leave(PathEnd::SubsurfaceReflection, exit.direction);
       d = exit.direction;
       continue;
     }
@@ -121,13 +123,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
       }
       const InterfaceCrossing bottom =
           crossPlaneInterfaceZ(d, slab.refractiveIndex, options_.belowRefractiveIndex, rng);
-      if (bottom.transmitted) {
-        path.end = PathEnd::Transmitted;
-        path.exitDirection = bottom.direction;
-        path.exitOffsetXCm = position.x;
-        path.exitOffsetYCm = position.y;
-        return path;
-      }
+      if (bottom.transmitted) return leave(PathEnd::Transmitted, bottom.direction);
       d = bottom.direction;
       continue;
     }
