@@ -18,13 +18,11 @@ namespace fs = std::filesystem;
 struct FigureArguments {
   std::vector<std::string> scenes;
   std::string out;
-  int spp = 0;
-  std::string resolution;
-  int threads = 0;
+  RenderCommandOptions options;
 };
 
 void runFigure(const FigureArguments& args) {
-  const RenderSettings settings = renderSettingsFromOptions(args.spp, args.resolution, args.threads);
+  const RenderSettings settings = renderSettingsFromOptions(args.options);
   // Parse every scene first, so a typo in the last one fails before hours of rendering.
   std::vector<SceneDesc> scenes;
   for (const auto& file : args.scenes) scenes.push_back(applyRenderSettings(loadSceneFile(file), settings));
@@ -61,9 +59,7 @@ void registerFigureCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("figure", "Render several scenes into a folder with a contact sheet");
   command->add_option("scenes", args->scenes, "Scene files (TOML)")->required()->check(CLI::ExistingFile);
   command->add_option("--out", args->out, "Output folder")->required();
-  command->add_option("--spp", args->spp, "Samples per pixel (default: each scene's)")->check(CLI::Range(1, 1 << 24));
-  command->add_option("--resolution", args->resolution, "WxH in pixels (default: each scene's)");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addRenderCommandOptions(*command, args->options);
   command->callback([args] { runFigure(*args); });
 }
 

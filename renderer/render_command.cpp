@@ -13,15 +13,13 @@ namespace {
 struct RenderArguments {
   std::string scene;
   std::string out;
-  int spp = 0;
-  std::string resolution;
+  RenderCommandOptions options;
   std::uint64_t seed = 0;
   bool seedGiven = false;
-  int threads = 0;
 };
 
 void runRender(const RenderArguments& args) {
-  RenderSettings settings = renderSettingsFromOptions(args.spp, args.resolution, args.threads);
+  RenderSettings settings = renderSettingsFromOptions(args.options);
   if (args.seedGiven) settings.seed = args.seed;
   const SceneDesc scene = applyRenderSettings(loadSceneFile(args.scene), settings);
   const RenderResult result = renderScene(scene, settings, &std::cout);
@@ -35,10 +33,8 @@ void registerRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("render", "Render a scene file to a spectral OpenEXR and PNG previews");
   command->add_option("scene", args->scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
   command->add_option("--out", args->out, "OpenEXR file to write (previews go beside it)")->required();
-  command->add_option("--spp", args->spp, "Samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
-  command->add_option("--resolution", args->resolution, "WxH in pixels (default: the scene's)");
+  addRenderCommandOptions(*command, args->options);
   auto* seed = command->add_option("--seed", args->seed, "Random seed (default: the scene's)");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   command->callback([args, seed] {
     args->seedGiven = seed->count() > 0;
     runRender(*args);

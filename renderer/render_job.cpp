@@ -30,6 +30,8 @@ SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings) {
   if (settings.width) scene.film.width = *settings.width;
   if (settings.height) scene.film.height = *settings.height;
   if (settings.seed) scene.integrator.seed = *settings.seed;
+  if (settings.skinMode) scene.integrator.skinMode = *settings.skinMode;
+  if (settings.effectTolerance) scene.integrator.effectTolerance = *settings.effectTolerance;
   return scene;
 }
 
@@ -69,15 +71,31 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   return result;
 }
 
-RenderSettings renderSettingsFromOptions(int spp, const std::string& resolution, int threads) {
+void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
+  command.add_option("--spp", options.spp, "Samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
+  command.add_option("--resolution", options.resolution, "WxH in pixels (default: the scene's)");
+  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command.add_option("--skin-model", options.skinMode, "walk (exact HyLIoS walk per hit) or table (tabulated fast path); default: the scene's")
+      ->check(CLI::IsMember({"walk", "table"}));
+  command.add_option("--epsilon", options.effectTolerance,
+                     "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped "
+                     "(0 = simulate everything; default: the scene's, else 1e-3)")
+      ->check(CLI::Range(0.0, 1.0));
+  command.add_flag("--explain", options.explain, "Print the effect plan (process, layer, optical depth, kept or skipped)");
+}
+
+RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {
   RenderSettings settings;
-  if (spp > 0) settings.samplesPerPixel = spp;
-  if (!resolution.empty()) {
-    const auto [w, h] = parseResolution(resolution);
+  if (options.spp > 0) settings.samplesPerPixel = options.spp;
+  if (!options.resolution.empty()) {
+    const auto [w, h] = parseResolution(options.resolution);
     settings.width = w;
     settings.height = h;
   }
-  settings.threads = threads;
+  settings.threads = options.threads;
+  if (!options.skinMode.empty()) settings.skinMode = options.skinMode;
+  if (options.effectTolerance >= 0) settings.effectTolerance = options.effectTolerance;
+  settings.explain = options.explain;
   return settings;
 }
 

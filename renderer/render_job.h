@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "renderer/film.h"
 #include "renderer/integrator.h"
 #include "renderer/scene.h"
@@ -21,6 +23,9 @@ struct RenderSettings {
   std::optional<std::uint64_t> seed;
   int threads = 0;          ///< 0: all cores
   bool progressBar = true;
+  std::optional<std::string> skinMode;     ///< "walk" or "table" (the scene's when unset)
+  std::optional<double> effectTolerance;   ///< ε of the effect planner (the scene's when unset)
+  bool explain = false;                    ///< print the effect plans before rendering
 };
 
 struct RenderResult {
@@ -33,9 +38,18 @@ struct RenderResult {
 /// "WxH" → (W, H); throws std::invalid_argument otherwise.
 std::pair<int, int> parseResolution(const std::string& text);
 
-/// Settings from the options `render` and `figure` share: spp (0 = the scene's), resolution
-/// ("" = the scene's, else WxH) and threads (0 = all cores).
-RenderSettings renderSettingsFromOptions(int spp, const std::string& resolution, int threads);
+/// The options `render` and `figure` share, as given on the command line.
+struct RenderCommandOptions {
+  int spp = 0;                 ///< 0: the scene's
+  std::string resolution;      ///< "": the scene's, else WxH
+  int threads = 0;             ///< 0: all cores
+  std::string skinMode;        ///< "": the scene's
+  double effectTolerance = -1; ///< < 0: the scene's
+  bool explain = false;
+};
+/// Adds --spp, --resolution, --threads, --skin-model, --epsilon and --explain to `command`.
+void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options);
+RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options);
 
 /// The scene with the settings applied (spp, resolution, seed).
 SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings);

@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "skin/effect_plan.h"
 #include "skin/specimen.h"
 
 namespace hylios {
@@ -137,7 +138,8 @@ struct ShapeDesc {
 struct IntegratorDesc {
   int maxDepth = 8;
   std::uint64_t seed = 1;
-  std::string skinMode = "walk";       ///< "walk" (exact HyLIoS walk at every hit)
+  std::string skinMode = "walk";       ///< "walk" (exact HyLIoS walk at every hit) or "table" (issue 5)
+  double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner (skin/effect_plan.h)
   FileLocation where;
 };
 

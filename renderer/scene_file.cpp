@@ -178,12 +178,13 @@ FilmDesc readFilm(const toml::table& t, const TomlSource& src) {
 IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
   IntegratorDesc d;
   if (!t) return d;
-  Reader r(*t, "[integrator]", src, {"max_depth", "seed", "skin_mode"});
+  Reader r(*t, "[integrator]", src, {"max_depth", "seed", "skin_mode", "effect_tolerance"});
   d.where = r.where();
   d.maxDepth = static_cast<int>(r.integer("max_depth", 1, 1024, d.maxDepth));
   d.seed =
       static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
-  if (r.has("skin_mode")) d.skinMode = r.choice("skin_mode", {"walk"});
+  if (r.has("skin_mode")) d.skinMode = r.choice("skin_mode", {"walk", "table"});
+  d.effectTolerance = r.number("effect_tolerance", NumberRange::closed(0.0, 1.0), d.effectTolerance);
   r.finish("[integrator]");
   return d;
 }

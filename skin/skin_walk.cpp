@@ -51,15 +51,23 @@ InterfaceCrossing SkinWalk::crossSurface(const Vec3& d, double nFrom, double nTo
   return roughSurface_ ? roughSurface_->cross(d, nFrom, nTo, rng) : crossPlaneInterfaceZ(d, nFrom, nTo, rng);
 }
 
-SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
+InterfaceCrossing SkinWalk::enterFromAir(const Vec3& incidentDirection, Rng& rng) const {
+  return crossSurface(incidentDirection, kAirRefractiveIndex, slabs_[0].refractiveIndex, rng);
+}
+
+SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng, LayerPathLengths* lengths) const {
+  const InterfaceCrossing entry = enterFromAir(incidentDirection, rng);
+  if (entry.transmitted) return traceEntered(entry.direction, rng, lengths);
   SkinPath path;
-  const InterfaceCrossing entry = crossSurface(incidentDirection, kAirRefractiveIndex, slabs_[0].refractiveIndex, rng);
   path.events = 1;
-  if (!entry.transmitted) {
-    path.end = PathEnd::SurfaceReflection;
-    path.exitDirection = entry.direction;
-    return path;
-  }
+  path.end = PathEnd::SurfaceReflection;
+  path.exitDirection = entry.direction;
+  return path;
+}
+
+SkinPath SkinWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng, LayerPathLengths* lengths) const {
+  SkinPath path;
+  path.events = 1;
   Vec3 position{0, 0, 0};
   // Ends the walk with the ray leaving the skin at `position` along `direction` (outside it).
   auto leave = [&path, &position](PathEnd end, const Vec3& direction) {
@@ -69,7 +77,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
     path.exitOffsetYCm = position.y;
     return path;
   };
-  Vec3 d = entry.direction;
+  Vec3 d = transmittedDirection;
   std::size_t k = 0;
   bool rayleighAvailable = true;  // Rayleigh acts at most once per pass through the layer (Sec. 4.2.1)
   while (path.events < kMaxEvents) {
@@ -81,6 +89,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
                                           : kInfinity;
     const double freePathCm = sampleFreePathCm(muTotal, rng);
     if (freePathCm < toBoundaryCm) {
+      if (lengths) lengths->cm[index(slab.layer)] += freePathCm;
       position += d * freePathCm;
       const double pick = rng.uniform() * muTotal;  // which coefficient's event came first
       if (pick < slab.muA_perCm) {
@@ -107,6 +116,7 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng) const {
       continue;
     }
     if (!std::isfinite(toBoundaryCm)) break;  // parallel to the layers with nothing to stop it
+    if (lengths) lengths->cm[index(slab.layer)] += toBoundaryCm;
     position += d * toBoundaryCm;
     position.z = d.z > 0 ? slab.bottomCm : slab.topCm;
     if (d.z < 0 && k == 0) {  // the skin surface, from inside

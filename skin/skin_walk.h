@@ -57,6 +57,15 @@ struct WalkOptions {
   /// dermis the dermis–hypodermis junction reflects everything diffusely (Sec. 4.3).
   Layer deepestLayer = Layer::ReticularDermis;
   double belowRefractiveIndex = 1.0;
+  /// Fast path (issue 5): a melanosome's absorption is drawn from its tabulated probability
+  /// (skin/melanosome_path_lengths.h) instead of tracing the ray inside it.
+  bool tabulatedMelanosomes = false;
+};
+
+/// Distance travelled in each layer by one ray (cm), indexed by index(Layer); filled on request
+/// (the effect planner's pilot run, skin/effect_plan.h).
+struct LayerPathLengths {
+  std::array<double, kLayerCount> cm{};
 };
 
 class SkinWalk {
@@ -68,8 +77,14 @@ class SkinWalk {
   /// when a process that is switched on has invalid constants (surface aspect ratio, melanosomes).
   explicit SkinWalk(const SkinOptics& optics, WalkOptions options = {});
 
-  /// Follows one ray arriving from air along `incidentDirection` (z > 0).
-  SkinPath trace(const Vec3& incidentDirection, Rng& rng) const;
+  /// Follows one ray arriving from air along `incidentDirection` (z > 0). When `lengths` is not
+  /// null, the distance travelled in each layer is added to it.
+  SkinPath trace(const Vec3& incidentDirection, Rng& rng, LayerPathLengths* lengths = nullptr) const;
+  /// The first step of trace: the ray from air meets the (rough) skin surface.
+  InterfaceCrossing enterFromAir(const Vec3& incidentDirection, Rng& rng) const;
+  /// The rest of trace: a ray that has just crossed into the top layer at the entry point, travelling
+  /// along `transmittedDirection` (z > 0). events starts at 1 (the entry crossing).
+  SkinPath traceEntered(const Vec3& transmittedDirection, Rng& rng, LayerPathLengths* lengths = nullptr) const;
 
   const SkinOptics& optics() const { return optics_; }
 
