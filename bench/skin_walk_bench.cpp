@@ -1,5 +1,6 @@
 // Throughput of the HyLIoS walk (rays/s, one thread) for specimens S1 and S4 at 365, 550, 1100 and
-// 1650 nm (45° incidence, the paper's full model), and of the MCML three-layer sample slab
+// 1650 nm (45° incidence, the paper's full model; skinWalkTabulated: the same with
+// WalkOptions::tabulatedMelanosomes, issue 5), and of the MCML three-layer sample slab
 // (photons/s, analog absorption, one thread). items_per_second is the figure to read.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
@@ -37,13 +38,14 @@ const Specimen& specimen(const std::string& name) {
 /// Rays per iteration: enough that one iteration is a few milliseconds at the slowest wavelength.
 constexpr std::uint64_t kRaysPerIteration = 8192;
 
-void skinWalk(benchmark::State& state, const std::string& specimenName) {
+void skinWalkWith(benchmark::State& state, const std::string& specimenName, bool tabulatedMelanosomes) {
   tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
   const double wavelengthNm = static_cast<double>(state.range(0));
   const SkinOptics optics = computeSkinOptics(specimen(specimenName), spectra(), wavelengthNm);
   WalkRunOptions run;
   run.incidenceDeg = 45;
   run.rays = kRaysPerIteration;
+  run.walk.tabulatedMelanosomes = tabulatedMelanosomes;
   double events = 0;
   for (auto _ : state) {
     const SkinTally tally = simulateSkin(optics, run);
@@ -53,6 +55,14 @@ void skinWalk(benchmark::State& state, const std::string& specimenName) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kRaysPerIteration));
   state.counters["events_per_ray"] = events;
+}
+
+void skinWalk(benchmark::State& state, const std::string& specimenName) {
+  skinWalkWith(state, specimenName, false);
+}
+
+void skinWalkTabulated(benchmark::State& state, const std::string& specimenName) {
+  skinWalkWith(state, specimenName, true);
 }
 
 void mcmlThreeLayerSlab(benchmark::State& state) {
@@ -74,6 +84,10 @@ void mcmlThreeLayerSlab(benchmark::State& state) {
 BENCHMARK_CAPTURE(skinWalk, S1, std::string("S1"))
     ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(skinWalk, S4, std::string("S4"))
+    ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(skinWalkTabulated, S1, std::string("S1"))
+    ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(skinWalkTabulated, S4, std::string("S4"))
     ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(mcmlThreeLayerSlab)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 

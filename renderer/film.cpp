@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace hylios {
 namespace {
@@ -82,6 +83,33 @@ double Film::value(int x, int y, std::size_t channel) const {
   requireInside("Film::value", x, y, channel, width_, height_, channels_.size());
   const std::size_t s = slot(x, y, channel);
   return counts_[s] == 0 ? 0.0 : sums_[s] / static_cast<double>(counts_[s]);
+}
+
+void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, int samplesPerPixelDone) {
+  if (sums.size() != sums_.size() || counts.size() != counts_.size()) {
+    throw std::invalid_argument("film state has " + std::to_string(sums.size()) + " sums and " +
+                                std::to_string(counts.size()) + " counts; this " + std::to_string(width_) + "x" +
+                                std::to_string(height_) + " film with " + std::to_string(channels_.size()) +
+                                " channels needs " + std::to_string(sums_.size()) + " of each");
+  }
+  if (samplesPerPixelDone < 0) throw std::invalid_argument("film state has a negative sample count");
+  const std::size_t channels = channels_.size();
+  for (std::size_t pixel = 0; pixel * channels < sums.size(); ++pixel) {
+    std::uint64_t total = 0;
+    for (std::size_t c = 0; c < channels; ++c) {
+      const std::size_t s = pixel * channels + c;
+      if (!std::isfinite(sums[s]))
+        throw std::invalid_argument("film state has a non-finite sum at pixel " + std::to_string(pixel) +
+                                    ", channel " + std::to_string(c));
+      total += counts[s];
+    }
+    if (total != static_cast<std::uint64_t>(samplesPerPixelDone))
+      throw std::invalid_argument("film state: pixel " + std::to_string(pixel) + " has " + std::to_string(total) +
+                                  " samples, not the " + std::to_string(samplesPerPixelDone) + " it claims");
+  }
+  sums_ = std::move(sums);
+  counts_ = std::move(counts);
+  samplesPerPixelDone_ = samplesPerPixelDone;
 }
 
 std::uint32_t Film::sampleCount(int x, int y, std::size_t channel) const {

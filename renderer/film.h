@@ -39,6 +39,15 @@ class Film {
   int samplesPerPixelDone() const { return samplesPerPixelDone_; }
   void setSamplesPerPixelDone(int spp) { samplesPerPixelDone_ = spp; }
 
+  /// The raw accumulation state, one slot per (pixel, channel), pixel-major (slot =
+  /// (y·width + x)·channels + channel): radiance sums and sample counts (render checkpoints).
+  const std::vector<double>& sums() const { return sums_; }
+  const std::vector<std::uint32_t>& counts() const { return counts_; }
+  /// Replaces the accumulated state with a saved one (a render checkpoint's). Throws
+  /// std::invalid_argument, saying what is wrong, unless the sizes fit this film, every sum is
+  /// finite, and every pixel's counts add up to samplesPerPixelDone (each sample adds one count).
+  void restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, int samplesPerPixelDone);
+
  private:
   std::size_t slot(int x, int y, std::size_t channel) const {
     return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) *

@@ -127,7 +127,8 @@ FilmImages buildImages(const Film& film) {
   return images;
 }
 
-void writeExr(const FilmImages& images, int samplesPerPixel, double exposure, const fs::path& path) {
+void writeExr(const FilmImages& images, const Film& film,
+              const std::vector<std::pair<std::string, std::string>>& extraAttributes, const fs::path& path) {
   writeAtomically(path, [&](const fs::path& tmp) {
     // The temporary name has no .exr extension: name the format explicitly.
     auto out = OIIO::ImageOutput::create("openexr");
@@ -138,9 +139,11 @@ void writeExr(const FilmImages& images, int samplesPerPixel, double exposure, co
     spec.attribute("compression", "zip");
     spec.attribute("spectralLayoutVersion", "1.0");
     spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
-    spec.attribute("hylios:spp", samplesPerPixel);
-    spec.attribute("hylios:exposure", static_cast<float>(exposure));
+    spec.attribute("hylios:spp", film.samplesPerPixelDone());
+    spec.attribute("hylios:sppTarget", film.desc().samplesPerPixel);
+    spec.attribute("hylios:exposure", static_cast<float>(film.desc().exposure));
     spec.attribute("hylios:rgb", images.rgbDescription);
+    for (const auto& [name, value] : extraAttributes) spec.attribute(name, value);
     if (!out->open(tmp.string(), spec)) {
       throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
     }
@@ -238,11 +241,12 @@ double colourBandNormalisation(const BandDesc& band) {
   return 1.0 / whiteY;
 }
 
-std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath) {
+std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath,
+                                       const std::vector<std::pair<std::string, std::string>>& extraAttributes) {
   requireFiniteFilm(film);
   const FilmImages images = buildImages(film);
   std::vector<fs::path> written;
-  writeExr(images, film.samplesPerPixelDone(), film.desc().exposure, exrPath);
+  writeExr(images, film, extraAttributes, exrPath);
   written.push_back(exrPath);
 
   const std::string stem = exrPath.stem().string();

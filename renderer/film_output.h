@@ -1,7 +1,7 @@
 // Writing a film: one multi-band OpenEXR in the spectral layout of Fichet, Pacanowski & Wilkie
 // (JCGT 10(3), 2021) — channels "S0.<wavelength with comma decimal separator>nm" (the channel means,
 // float) plus R, G, B preview channels, attributes spectralLayoutVersion = "1.0" and
-// emissiveUnits = "W.m^-2.sr^-1", "hylios:spp" (int), "hylios:exposure" and "hylios:rgb" (what
+// emissiveUnits = "W.m^-2.sr^-1", "hylios:spp" and "hylios:sppTarget" (int), "hylios:exposure" and "hylios:rgb" (what
 // R, G, B hold) — and PNG previews beside it, one per band, named <stem>_<band>.png:
 //   * a colour band (a range covering 400–700 nm): XYZ = k·Σ_i L(λ_i)·cmf(λ_i)·Δλ over its channels
 //     (CIE 1931 2°, Δλ = the band's step), k = colourBandNormalisation(); XYZ → linear sRGB (D65
@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "renderer/film.h"
@@ -38,8 +39,13 @@ bool isColourBand(const BandDesc& band);
 /// scale 1 — has Y = 1 (and R = G = B ≈ 1 before exposure).
 double colourBandNormalisation(const BandDesc& band);
 
-/// Writes `exrPath` and the previews; returns every file written (EXR first).
-std::vector<std::filesystem::path> writeFilmOutputs(const Film& film, const std::filesystem::path& exrPath);
+/// Writes `exrPath` and the previews; returns every file written (EXR first). The EXR header gets
+/// "hylios:spp" (samples per pixel done) and "hylios:sppTarget" (the film's target; less when a
+/// render was stopped early), plus `extraAttributes` as string attributes (name → value, e.g.
+/// "hylios:seed").
+std::vector<std::filesystem::path> writeFilmOutputs(
+    const Film& film, const std::filesystem::path& exrPath,
+    const std::vector<std::pair<std::string, std::string>>& extraAttributes = {});
 
 /// Pastes PNG panels side by side in a grid with their labels under them (a contact sheet).
 void writeContactSheet(const std::vector<std::filesystem::path>& panels,

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -87,7 +88,8 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
         for (const auto& s : scene.shapes) used = used || s.material == desc.name;
         if (!used) break;  // only the skin that the scene shows is prepared
         const skin::Specimen specimen = loadMaterialSpecimen(desc, specimenDir());
-        m.skin = std::make_unique<SkinMaterial>(desc, specimen, i, scene.unitCm, channelWavelengths, *spectra);
+        m.skin = std::make_unique<SkinMaterial>(desc, specimen, i, scene.unitCm, channelWavelengths, *spectra,
+                                                scene.integrator.skinMode, scene.integrator.effectTolerance);
         break;
       }
     }
@@ -103,6 +105,15 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
 }
 
 Integrator::~Integrator() = default;
+
+std::string Integrator::effectPlanReport() const {
+  std::string text;
+  for (std::size_t i = 0; i < materials_.size(); ++i)
+    if (materials_[i].skin)
+      text += "effect plans of skin material '" + scene_.materials[i].name + "':\n" +
+              materials_[i].skin->walks().explainEffectPlans();
+  return text;
+}
 
 std::size_t Integrator::skippedDegenerateTriangles(std::string* report) const {
   std::size_t total = 0;
@@ -252,13 +263,49 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
       throw std::invalid_argument("Integrator::render: the film's channels differ from the integrator's");
   if (film.width() != scene_.film.width || film.height() != scene_.film.height)
     throw std::invalid_argument("Integrator::render: the film's resolution differs from the scene's");
+  const int spp = film.desc().samplesPerPixel;
+  int done = film.samplesPerPixelDone();
+  if (done < 0 || done > spp)
+    throw std::invalid_argument("Integrator::render: the film has " + std::to_string(done) +
+                                " samples per pixel, the target is " + std::to_string(spp));
+  if (options.samplesPerPass < 0) throw std::invalid_argument("Integrator::render: samplesPerPass must be >= 0");
+  const std::uint64_t tiles = static_cast<std::uint64_t>((film.width() + kTileSize - 1) / kTileSize) *
+                              static_cast<std::uint64_t>((film.height() + kTileSize - 1) / kTileSize);
+  std::unique_ptr<ProgressBar> progress;
+  if (options.progressBar && done < spp)
+    progress = std::make_unique<ProgressBar>(options.label, tiles * static_cast<std::uint64_t>(spp - done));
+  RenderStats total;
+  int passSamples = options.samplesPerPass > 0 ? options.samplesPerPass : 1;
+  while (done < spp) {
+    if (options.stopRequested && options.stopRequested()) break;
+    const int end = spp - done > passSamples ? done + passSamples : spp;
+    const auto start = std::chrono::steady_clock::now();
+    renderPass(film, done, end, total, progress.get());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    done = end;
+    film.setSamplesPerPixelDone(done);
+    if (options.onPassDone) options.onPassDone(done, seconds);
+    if (options.samplesPerPass == 0 && seconds < kAdaptivePassSeconds && passSamples < (1 << 24)) {
+      // Aim the next pass at kAdaptivePassSeconds, growing at most 8-fold (the first passes warm up).
+      const double factor = std::min(8.0, std::round(kAdaptivePassSeconds / std::max(seconds, 1e-9)));
+      passSamples *= std::max(1, static_cast<int>(factor));
+    }
+  }
+  if (progress) {
+    if (done == spp)
+      progress->finish();
+    else
+      progress->stop();
+  }
+  return total;
+}
+
+void Integrator::renderPass(Film& film, int firstSample, int endSample, RenderStats& total,
+                            ProgressBar* progress) const {
   const int width = film.width(), height = film.height();
   const int spp = film.desc().samplesPerPixel;
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
   const std::size_t tiles = static_cast<std::size_t>(tilesX) * static_cast<std::size_t>(tilesY);
-  std::unique_ptr<ProgressBar> progress;
-  if (options.progressBar) progress = std::make_unique<ProgressBar>(options.label, tiles);
-  RenderStats total;
   std::mutex totalMutex;
   const std::uint64_t seed = scene_.integrator.seed;
   constexpr std::uint64_t kChannelRotationStream = ~std::uint64_t{0};
@@ -272,11 +319,11 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
           const std::uint64_t pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) +
                                       static_cast<std::uint64_t>(x);
           // Channels are stratified over the pixel's samples (sample s takes the s-th of spp equal
-          // slices of [0, 1), jittered), with a per-pixel rotation (Cranley–Patterson) drawn from
-          // its own stream: with spp ≥ the number of channels every channel of the pixel gets a
-          // sample, and no channel is skipped in the same way for every pixel.
+          // slices of [0, 1), jittered; spp is the target, not the pass), with a per-pixel rotation
+          // (Cranley–Patterson) drawn from its own stream: with spp ≥ the number of channels every
+          // channel of the pixel gets a sample, and no channel is skipped in the same way for every pixel.
           const double rotation = skin::Rng(seed, pixel, kChannelRotationStream).uniform();
-          for (int s = 0; s < spp; ++s) {
+          for (int s = firstSample; s < endSample; ++s) {
             skin::Rng rng(seed, pixel, static_cast<std::uint64_t>(s));
             double u = (static_cast<double>(s) + rng.uniform()) / static_cast<double>(spp) + rotation;
             u -= std::floor(u);
@@ -286,14 +333,11 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
             film.addSample(x, y, channel, radiance(camera_->generateRay(px, py, lu, lv), channel, rng, stats));
           }
         }
-      if (progress) progress->advance();
+      if (progress) progress->advance(static_cast<std::uint64_t>(endSample - firstSample));
     }
     std::lock_guard<std::mutex> lock(totalMutex);
     total.add(stats);
   });
-  if (progress) progress->finish();
-  film.setSamplesPerPixelDone(spp);
-  return total;
 }
 
 }  // namespace hylios

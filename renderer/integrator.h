@@ -18,6 +18,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@
 
 namespace hylios {
 
+class ProgressBar;
+
 /// Counters of a render (sums over all paths; order-independent, so deterministic).
 struct RenderStats {
   std::uint64_t paths = 0;
@@ -45,10 +48,24 @@ struct RenderStats {
   void add(const RenderStats& o);
 };
 
+/// Sample passes: render() adds samples to every pixel pass by pass (samples [a, b) of every
+/// pixel, then [b, c), ...), so it can stop between passes with the same number of samples in
+/// every pixel; a pixel's samples are always added in the order 0, 1, 2, ..., so the film's sums
+/// are bit-identical however the samples are split into passes (and whether a render was stopped
+/// and continued).
 struct RenderOptions {
   bool progressBar = true;
   std::string label = "render";
+  /// Samples per pixel per pass; 0: adaptive — 1 at first, then after every pass shorter than
+  /// kAdaptivePassSeconds multiplied by round(kAdaptivePassSeconds / its duration), at most 8-fold,
+  /// so passes settle near kAdaptivePassSeconds (the latency of a stop request).
+  int samplesPerPass = 0;
+  /// Asked before each pass; true stops the render (film.samplesPerPixelDone() tells how far it got).
+  std::function<bool()> stopRequested;
+  /// Called after each completed pass with the samples per pixel done and the pass's duration.
+  std::function<void(int samplesDone, double passSeconds)> onPassDone;
 };
+constexpr double kAdaptivePassSeconds = 2.0;
 
 class Integrator {
  public:
@@ -57,8 +74,10 @@ class Integrator {
   Integrator(const SceneDesc& scene, const std::vector<double>& channelWavelengths);
   ~Integrator();
 
-  /// Renders film.desc().samplesPerPixel samples per pixel into `film` (whose channels must be
-  /// the wavelengths given to the constructor).
+  /// Renders samples film.samplesPerPixelDone() .. film.desc().samplesPerPixel − 1 of every pixel
+  /// into `film` (whose channels must be the wavelengths given to the constructor), in passes, and
+  /// updates film.samplesPerPixelDone() after each; returns the counters of the samples it drew.
+  /// A film continued from a saved state gets exactly the sums of an uninterrupted render.
   RenderStats render(Film& film, const RenderOptions& options = {}) const;
 
   /// Radiance along `ray` at channel `channel` (one path).
@@ -69,6 +88,8 @@ class Integrator {
   const LightSet& lights() const { return *lights_; }
   /// Degenerate triangles skipped over all meshes, with a line per mesh in `report`.
   std::size_t skippedDegenerateTriangles(std::string* report = nullptr) const;
+  /// The skin materials' effect plans (skin_walk_cache.h), for --explain.
+  std::string effectPlanReport() const;
 
  private:
   struct Material {
@@ -82,6 +103,8 @@ class Integrator {
   template <typename Lobe>
   double directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal, std::size_t channel,
                      skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const;
+  /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
+  void renderPass(Film& film, int firstSample, int endSample, RenderStats& total, ProgressBar* progress) const;
   Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction, double tMax) const;
 
   SceneDesc scene_;

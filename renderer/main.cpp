@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   hylios::registerRadialProfileCommand(app);
   hylios::registerRenderCommand(app);
   hylios::registerFigureCommand(app);
+  hylios::registerImageDiffCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

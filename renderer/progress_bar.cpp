@@ -25,6 +25,13 @@ void ProgressBar::finish() {
   finished_ = true;
 }
 
+void ProgressBar::stop() {
+  if (!enabled_ || finished_) return;
+  draw(done_.load(), true);
+  std::fputc('\n', stderr);
+  finished_ = true;
+}
+
 void ProgressBar::draw(std::uint64_t done, bool force) {
   std::unique_lock<std::mutex> lock(drawMutex_, std::try_to_lock);
   if (!lock.owns_lock() || finished_) return;

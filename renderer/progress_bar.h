@@ -16,6 +16,8 @@ class ProgressBar {
   void advance(std::uint64_t steps = 1);
   /// Draws 100 % and ends the line (also done by the destructor).
   void finish();
+  /// Ends the line where the bar stands (a stopped render), without drawing 100 %.
+  void stop();
   static bool enabledOnThisTerminal();
 
  private:

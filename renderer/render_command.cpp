@@ -1,9 +1,19 @@
 // hylios render: one scene file → a spectral OpenEXR plus PNG previews (renderer/film_output.h).
+// SIGINT/SIGTERM stop the render after its current sample pass: the samples so far are written
+// (EXR + previews, "hylios:spp" < "hylios:sppTarget") with a checkpoint <out>.hylios-state
+// (renderer/render_checkpoint.h), and the command exits with 128 + signal; --resume continues the
+// checkpoint to the image an uninterrupted render gives, and removes it.
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
+#include <vector>
 
 #include "renderer/commands.h"
 #include "renderer/film_output.h"
+#include "renderer/interrupt_signal.h"
+#include "renderer/render_checkpoint.h"
 #include "renderer/render_job.h"
 #include "renderer/scene_file.h"
 
@@ -16,14 +26,67 @@ struct RenderArguments {
   RenderCommandOptions options;
   std::uint64_t seed = 0;
   bool seedGiven = false;
+  bool resume = false;
 };
 
-void runRender(const RenderArguments& args) {
+/// The given options of `command` that can change the image, canonical ("--name=value" in name
+/// order), for checkpoints: every option except the scene path (its contents are hashed), --out,
+/// --resume, --threads (the image does not depend on it), --explain, and --spp, --resolution and
+/// --seed (compared by their effect, RenderIdentity).
+std::string imageAffectingOptions(const CLI::App& command) {
+  static const std::set<std::string> ignored = {"--help", "--out", "--resume", "--threads", "--explain",
+                                                "--spp", "--resolution", "--seed"};
+  std::vector<std::string> given;
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->count() == 0 || !option->nonpositional()) continue;
+    const std::string name =
+        option->get_lnames().empty() ? "-" + option->get_snames().front() : "--" + option->get_lnames().front();
+    if (ignored.count(name) > 0) continue;
+    std::string text = name + "=";
+    for (std::size_t i = 0; i < option->results().size(); ++i) text += (i ? "," : "") + option->results()[i];
+    given.push_back(text);
+  }
+  std::sort(given.begin(), given.end());
+  std::string joined;
+  for (const std::string& text : given) joined += (joined.empty() ? "" : " ") + text;
+  return joined;
+}
+
+void runRender(const RenderArguments& args, const CLI::App& command) {
   RenderSettings settings = renderSettingsFromOptions(args.options);
   if (args.seedGiven) settings.seed = args.seed;
   const SceneDesc scene = applyRenderSettings(loadSceneFile(args.scene), settings);
+  const RenderIdentity identity = renderIdentity(scene, imageAffectingOptions(command));
+  const std::filesystem::path checkpoint = checkpointPathFor(args.out);
+  if (args.resume)
+    settings.resumeFrom = std::make_shared<const RenderCheckpoint>(readMatchingCheckpoint(checkpoint, identity));
+  const InterruptSignalScope signals;
+  settings.stopRequested = [&signals] { return signals.requested(); };
   const RenderResult result = renderScene(scene, settings, &std::cout);
-  for (const auto& path : writeFilmOutputs(*result.film, args.out)) std::cout << "wrote " << path.string() << "\n";
+  const std::vector<std::pair<std::string, std::string>> attributes = {{"hylios:seed", std::to_string(identity.seed)}};
+  if (!result.stopped) {
+    for (const auto& path : writeFilmOutputs(*result.film, args.out, attributes))
+      std::cout << "wrote " << path.string() << "\n";
+    std::error_code ignored;
+    if (std::filesystem::remove(checkpoint, ignored)) std::cout << "removed the checkpoint " << checkpoint.string() << "\n";
+    return;
+  }
+  const int signal = signals.signalNumber();
+  const int done = result.film->samplesPerPixelDone();
+  if (done == result.samplesPerPixelAtStart) {
+    std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal)
+              << " before a sample pass completed; nothing written\n";
+  } else {
+    for (const auto& path : writeFilmOutputs(*result.film, args.out, attributes))
+      std::cout << "wrote " << path.string() << "\n";
+    writeRenderCheckpoint(checkpoint, identity, *result.film);
+    std::cout << "wrote " << checkpoint.string() << "\n";
+    std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal) << " at " << done << "/"
+              << scene.film.samplesPerPixel << " spp; " << args.out << " holds the samples so far. Continue with the "
+              << "same command and --resume.\n";
+  }
+  std::cout << std::flush;
+  throw CLI::RuntimeError(InterruptSignalScope::exitStatusFor(signal));
 }
 
 }  // namespace
@@ -35,9 +98,12 @@ void registerRenderCommand(CLI::App& app) {
   command->add_option("--out", args->out, "OpenEXR file to write (previews go beside it)")->required();
   addRenderCommandOptions(*command, args->options);
   auto* seed = command->add_option("--seed", args->seed, "Random seed (default: the scene's)");
-  command->callback([args, seed] {
+  command->add_flag("--resume", args->resume,
+                    "Continue the interrupted render whose checkpoint <out>.hylios-state lies beside --out "
+                    "(same scene and options)");
+  command->callback([args, seed, command] {
     args->seedGiven = seed->count() > 0;
-    runRender(*args);
+    runRender(*args, *command);
   });
 }
 

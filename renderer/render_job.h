@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "renderer/film.h"
 #include "renderer/integrator.h"
+#include "renderer/render_checkpoint.h"
 #include "renderer/scene.h"
 
 namespace hylios {
@@ -26,6 +28,10 @@ struct RenderSettings {
   std::optional<std::string> skinMode;     ///< "walk" or "table" (the scene's when unset)
   std::optional<double> effectTolerance;   ///< ε of the effect planner (the scene's when unset)
   bool explain = false;                    ///< print the effect plans before rendering
+  /// Interruptible renders (render --resume): asked between sample passes, true stops the render.
+  std::function<bool()> stopRequested;
+  /// A checkpoint's state to continue (readMatchingCheckpoint has checked it against the scene).
+  std::shared_ptr<const RenderCheckpoint> resumeFrom;
 };
 
 struct RenderResult {
@@ -33,6 +39,8 @@ struct RenderResult {
   RenderStats stats;
   double prepareSeconds = 0;  ///< scene loading, BVH build, skin-walk precomputation
   double renderSeconds = 0;
+  int samplesPerPixelAtStart = 0;  ///< > 0 when continued from a checkpoint
+  bool stopped = false;            ///< stopped by stopRequested before the spp target
 };
 
 /// "WxH" → (W, H); throws std::invalid_argument otherwise.

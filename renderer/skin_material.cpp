@@ -63,7 +63,8 @@ skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesys
 
 SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex,
                            double unitCm, const std::vector<double>& channelWavelengths,
-                           const skin::SpectralDatabase& spectra)
+                           const skin::SpectralDatabase& spectra, const std::string& skinMode,
+                           double effectTolerance)
     : materialIndex_(materialIndex), unitCm_(unitCm), aspectRatio_(specimen.surfaceFoldAspectRatio),
       freckles_(desc.skin.freckles, desc.where) {
   if (!(unitCm > 0) || !std::isfinite(unitCm)) throw SceneError(desc.where, "unit_cm must be a positive number");
@@ -76,7 +77,14 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
     throw SceneError(desc.where, "melanin map multipliers must be finite and >= 0");
   const double lo = std::min(mapMin_, mapMax_) * freckles_.minMultiplier();
   const double hi = std::max(mapMin_, mapMax_) * freckles_.maxMultiplier();
-  walks_ = std::make_unique<SkinWalkCache>(specimen, lo, hi, channelWavelengths, spectra, desc.where);
+  if (skinMode != "walk" && skinMode != "table")
+    throw SceneError(desc.where, "skin mode must be \"walk\" or \"table\", got \"" + skinMode + "\"");
+  const bool tableMode = skinMode == "table";
+  walks_ = std::make_unique<SkinWalkCache>(specimen, lo, hi, channelWavelengths, spectra, desc.where,
+                                           tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
+                                           effectTolerance);
+  if (tableMode)
+    tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(), SkinTableCache::renderSettings());
   for (int i = 0; i < kLobeTableSize; ++i)
     lobeNormalisation_.push_back(facetReflectionLeaves(aspectRatio_, static_cast<double>(i) / (kLobeTableSize - 1)));
 }
@@ -122,8 +130,9 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
   const skin::Frame frame(toSkin(-ns));         // z into the skin
   const skin::Vec3 incident = frame.toLocal(toSkin(direction));
   const double multiplier = melaninMultiplier(hit);
-  const skin::SkinWalk& walk = walks_->walk(channel, multiplier, rng.uniform());
-  const skin::SkinPath path = walk.trace(incident, rng);
+  const int level = walks_->level(multiplier, rng.uniform());
+  const skin::SkinPath path = tables_ ? tables_->table(channel, level).sample(incident, rng)
+                                      : walks_->walk(channel, level).trace(incident, rng);
 
   SkinScatter out;
   out.point = hit.position;

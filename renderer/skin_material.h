@@ -51,6 +51,7 @@
 #include "renderer/embree_scene.h"
 #include "renderer/freckle_field.h"
 #include "renderer/scene.h"
+#include "renderer/skin_table_cache.h"
 #include "renderer/skin_walk_cache.h"
 #include "renderer/texture_map.h"
 #include "skin/random.h"
@@ -72,8 +73,12 @@ class SkinMaterial {
  public:
   /// `specimen` already has the material's overrides applied; `materialIndex` is this material's
   /// index in SceneDesc::materials (exit points must land on shapes of this material).
+  /// skinMode "table" samples exit tables (skin/exit_table.h, from ExitTableCache::shared(), with
+  /// SkinTableCache::kTableMelaninLevels levels) instead of walking; "walk" runs the exact walk.
   SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex, double unitCm,
-               const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra);
+               const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
+               const std::string& skinMode = "walk",
+               double effectTolerance = skin::kDefaultEffectTolerance);  ///< ε, skin/effect_plan.h
 
   /// Melanin multiplier at a hit: melanin map (by uv) × freckles (by position in cm).
   double melaninMultiplier(const SurfaceHit& hit) const;
@@ -92,6 +97,8 @@ class SkinMaterial {
   double surfaceLobeNormalisation(double cosIncident) const;
 
   const SkinWalkCache& walks() const { return *walks_; }
+  /// The exit tables in table mode, else null.
+  const SkinTableCache* tables() const { return tables_.get(); }
   double surfaceAspectRatio() const { return aspectRatio_; }
 
  private:
@@ -102,6 +109,7 @@ class SkinMaterial {
   double mapMin_ = 1, mapMax_ = 1;
   FreckleField freckles_;
   std::unique_ptr<SkinWalkCache> walks_;
+  std::unique_ptr<SkinTableCache> tables_;  ///< table mode only
   std::vector<double> lobeNormalisation_;  ///< N at cosθ = i / (size − 1)
 };
 

@@ -6,10 +6,26 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <string>
 
 #include "skin/skin_optics.h"
 
 namespace hylios {
+
+namespace {
+
+/// One plan for a channel from pilots at the two end melanin levels (see the header).
+skin::EffectPlan planChannel(const skin::Specimen& lowest, const skin::Specimen& highest,
+                             const skin::SpectralDatabase& spectra, double wavelengthNm, double epsilon) {
+  std::vector<skin::SkinOptics> ends{skin::computeSkinOptics(lowest, spectra, wavelengthNm)};
+  if (&lowest != &highest) ends.push_back(skin::computeSkinOptics(highest, spectra, wavelengthNm));
+  skin::PlanOptions options;
+  options.incidenceDeg = {0.0, 60.0};
+  options.pilotRays = SkinWalkCache::kRenderPilotRays;
+  return skin::planEffects(ends, epsilon, options);
+}
+
+}  // namespace
 
 skin::Specimen scaleMelanin(const skin::Specimen& specimen, double multiplier) {
   skin::Specimen scaled = specimen;
@@ -20,9 +36,12 @@ skin::Specimen scaleMelanin(const skin::Specimen& specimen, double multiplier) {
 
 SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
                              const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
-                             const FileLocation& where)
+                             const FileLocation& where, int levels, double effectTolerance)
     : lo_(std::min(minMultiplier, maxMultiplier)), hi_(std::max(minMultiplier, maxMultiplier)),
-      levels_(hi_ > lo_ ? kMelaninLevels : 1), channels_(channelWavelengths.size()) {
+      levels_(hi_ > lo_ ? levels : 1), channels_(channelWavelengths.size()), effectTolerance_(effectTolerance) {
+  if (!(effectTolerance >= 0 && effectTolerance <= 1))
+    throw SceneError(where, "effect tolerance must lie in [0, 1], got " + std::to_string(effectTolerance));
+  if (levels < 2) throw SceneError(where, "melanin levels must be at least 2, got " + std::to_string(levels));
   if (!(lo_ >= 0) || !std::isfinite(hi_)) throw SceneError(where, "melanin multipliers must be finite and >= 0");
   std::vector<skin::Specimen> specimens;
   for (int k = 0; k < levels_; ++k) {
@@ -34,13 +53,37 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
                                   " is not valid: " + e.what());
     }
   }
-  walks_.resize(static_cast<std::size_t>(levels_) * channels_);
+  // A wavelength shared by several channels (overlapping bands) is prepared once.
+  std::vector<double> distinct;
+  for (double w : channelWavelengths) {
+    const auto at = std::find(distinct.begin(), distinct.end(), w);
+    distinctOfChannel_.push_back(static_cast<std::size_t>(at - distinct.begin()));
+    if (at == distinct.end()) distinct.push_back(w);
+  }
+  distinctWavelengths_ = distinct.size();
+  walks_.resize(static_cast<std::size_t>(levels_) * distinctWavelengths_);
   std::mutex errorMutex;
   std::string error;
+  if (effectTolerance > 0) {
+    plans_.resize(distinctWavelengths_);
+    tbb::parallel_for(std::size_t{0}, distinctWavelengths_, [&](std::size_t c) {
+      try {
+        plans_[c] = planChannel(specimens.front(), specimens.back(), spectra, distinct[c], effectTolerance);
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(errorMutex);
+        if (error.empty()) error = e.what();
+      }
+    });
+    if (!error.empty()) throw SceneError(where, "skin specimen '" + specimen.name + "': " + error);
+  }
   tbb::parallel_for(std::size_t{0}, walks_.size(), [&](std::size_t i) {
-    const std::size_t k = i / channels_, c = i % channels_;
+    const std::size_t k = i / distinctWavelengths_, c = i % distinctWavelengths_;
     try {
-      walks_[i].emplace(skin::computeSkinOptics(specimens[k], spectra, channelWavelengths[c]));
+      const skin::SkinOptics optics = skin::computeSkinOptics(specimens[k], spectra, distinct[c]);
+      if (plans_.empty())
+        walks_[i].emplace(optics);
+      else
+        walks_[i].emplace(plans_[c].apply(optics), plans_[c].walk);
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(errorMutex);
       if (error.empty()) error = e.what();
@@ -60,8 +103,15 @@ int SkinWalkCache::level(double multiplier, double u) const {
   return (u < t - below) ? below + 1 : below;
 }
 
+std::string SkinWalkCache::explainEffectPlans() const {
+  if (plans_.empty()) return "  effect planning off (epsilon = 0): every process simulated\n";
+  std::string text;
+  for (const skin::EffectPlan& plan : plans_) text += plans_.size() <= 4 ? plan.explain() : "  " + plan.summary();
+  return text;
+}
+
 const skin::SkinWalk& SkinWalkCache::walk(std::size_t channel, int level) const {
-  return *walks_[static_cast<std::size_t>(level) * channels_ + channel];
+  return *walks_[static_cast<std::size_t>(level) * distinctWavelengths_ + distinctOfChannel_[channel]];
 }
 
 }  // namespace hylios

@@ -5,16 +5,20 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "renderer/atomic_file.h"
 #include "renderer/commands.h"
 #include "renderer/data_paths.h"
+#include "renderer/exit_table_cache.h"
 #include "renderer/gnuplot_plot.h"
 #include "renderer/measured_spectrum.h"
 #include "renderer/progress_bar.h"
+#include "renderer/skin_table_cache.h"
 #include "renderer/specimen_options.h"
 #include "renderer/wavelength_list.h"
+#include "skin/effect_plan.h"
 #include "skin/skin_simulation.h"
 
 namespace hylios {
@@ -30,14 +34,39 @@ struct SpectrumArguments {
   std::string plot;
   std::string measured;
   int threads = 0;
+  double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner; 0: full model
+  bool explain = false;
+  std::string skinModel = "walk";  ///< "table": rays sampled from the cached exit table (skin/exit_table.h)
 };
 
-std::string formatCsv(const std::vector<double>& wavelengths, const std::vector<skin::SkinTally>& tallies) {
+/// Full plan tables up to this many wavelengths, one summary line each beyond.
+constexpr std::size_t kMaxExplainTables = 8;
+/// Pilot rays of the effect planner per wavelength (skin/effect_plan.h).
+constexpr std::uint64_t kSpectrumPilotRays = 2000;
+
+/// The walk to run at one wavelength: the planned optics and switches, or the full model when
+/// ε = 0 and no plan is to be printed (no pilot then). Also returns the plan when one was made.
+std::optional<skin::EffectPlan> planWavelength(const SpectrumArguments& args, const skin::SkinOptics& optics) {
+  if (args.effectTolerance == 0 && !args.explain) return std::nullopt;
+  skin::PlanOptions options;
+  options.incidenceDeg = {args.angleDeg};
+  options.pilotRays = kSpectrumPilotRays;
+  options.seed = args.seed;
+  return skin::planEffects(optics, args.effectTolerance, options);
+}
+
+void printPlans(const std::vector<std::optional<skin::EffectPlan>>& plans) {
+  for (const auto& plan : plans)
+    if (plan) std::cout << (plans.size() <= kMaxExplainTables ? plan->explain() : plan->summary());
+}
+
+std::string formatCsv(const std::vector<double>& wavelengths, const std::vector<skin::SkinTally>& tallies,
+                      const std::vector<std::optional<skin::EffectPlan>>& plans) {
   std::ostringstream csv;
   csv << "wavelength_nm,reflectance,reflectance_stderr,surface_reflectance,subsurface_reflectance,"
          "transmittance,absorptance,absorptance_stderr,event_limited";
   for (skin::Layer layer : skin::kAllLayers) csv << ",absorptance_" << skin::layerName(layer);
-  csv << "\n";
+  csv << ",effect_bound\n";  // the effect planner's bound on |ΔR| (0: full model)
   char buffer[64];
   auto put = [&](double value) {
     std::snprintf(buffer, sizeof buffer, ",%.6g", value);
@@ -56,6 +85,7 @@ std::string formatCsv(const std::vector<double>& wavelengths, const std::vector<
     put(t.absorptance().standardError);
     put(t.eventLimited().mean);
     for (skin::Layer layer : skin::kAllLayers) put(t.absorptance(layer).mean);
+    put(plans[i] ? plans[i]->droppedDepthBound : 0.0);
     csv << "\n";
   }
   return csv.str();
@@ -80,6 +110,20 @@ void plotSpectrum(const SpectrumArguments& args, const std::string& specimenName
   plotPanels(args.plot, title.str(), {panel}, 1, 1100, 650);
 }
 
+/// Table mode: `args.rays` rays sampled from the exit table of `walk` (ExitTableCache::shared(), the
+/// renderer's table settings), ray i on Rng(seed, wavelengthStream(λ), i) like the walk.
+skin::SkinTally tableTally(const skin::SkinWalk& walk, const SpectrumArguments& args) {
+  const auto table = ExitTableCache::shared().get(walk, SkinTableCache::renderSettings());
+  const skin::Vec3 incident = skin::incidentDirection(args.angleDeg);
+  const std::uint64_t stream = skin::wavelengthStream(walk.optics().wavelengthNm);
+  skin::SkinTally tally;
+  for (std::uint64_t i = 0; i < args.rays; ++i) {
+    skin::Rng rng(args.seed, stream, i);
+    tally.record(table->sample(incident, rng));
+  }
+  return tally;
+}
+
 void runSpectrum(const SpectrumArguments& args) {
   std::unique_ptr<tbb::global_control> threadLimit;
   if (args.threads > 0)
@@ -96,13 +140,20 @@ void runSpectrum(const SpectrumArguments& args) {
   run.rays = args.rays;
   run.seed = args.seed;
   std::vector<skin::SkinTally> tallies(wavelengths.size());
+  std::vector<std::optional<skin::EffectPlan>> plans(wavelengths.size());
   ProgressBar progress("spectrum " + specimen.name, wavelengths.size());
   tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {
-    tallies[i] = skin::simulateSkin(optics[i], run);
+    plans[i] = planWavelength(args, optics[i]);
+    skin::WalkRunOptions planned = run;
+    if (plans[i]) planned.walk = plans[i]->walk;
+    const skin::SkinOptics& walked = plans[i] ? plans[i]->optics : optics[i];
+    tallies[i] = args.skinModel == "table" ? tableTally(skin::SkinWalk(walked, planned.walk), args)
+                                           : skin::simulateSkin(walked, planned);
     progress.advance();
   });
   progress.finish();
-  writeTextAtomically(args.out, formatCsv(wavelengths, tallies));
+  if (args.explain) printPlans(plans);
+  writeTextAtomically(args.out, formatCsv(wavelengths, tallies, plans));
   if (measured) {
     std::vector<double> model;
     for (const auto& t : tallies) model.push_back(t.reflectance().mean);
@@ -126,7 +177,18 @@ void registerSpectrumCommand(CLI::App& app) {
   command->add_option("--out", args->out, "CSV file to write")->required();
   command->add_option("--plot", args->plot, "PNG plot to write");
   command->add_option("--measured", args->measured, "FILE:COLUMN of a measured curve to compare with (RMS printed)");
+  command->add_option("--skin-model", args->skinModel,
+                      "walk (exact HyLIoS walk per ray) or table (rays sampled from exit tables cached in "
+                      "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)")
+      ->check(CLI::IsMember({"walk", "table"}));
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->add_option("--epsilon", args->effectTolerance,
+                      "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped, "
+                      "bounding the change of R by it (0 = simulate everything; default 1e-3)")
+      ->check(CLI::Range(0.0, 1.0));
+  command->add_flag("--explain", args->explain,
+                    "Print each wavelength's effect plan (process, layer, optical depth, kept or skipped; "
+                    "one line per wavelength beyond 8)");
   command->callback([args] { runSpectrum(*args); });
 }
 

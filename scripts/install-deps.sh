@@ -7,7 +7,7 @@ packages=(
   libembree-dev libopenimageio-dev libopenexr-dev libtinyobjloader-dev libglm-dev libtbb-dev
   libcli11-dev libtomlplusplus-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  gnuplot-nox fonts-dejavu-core
+  gnuplot-nox fonts-dejavu-core python3
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "skin/exponential_polar_sampling.h"
+#include "skin/melanosome_path_lengths.h"
 #include "skin/polar_rejection_sampling.h"
 #include "skin/spheroid.h"
 
@@ -16,11 +17,11 @@ void requirePositiveIndex(double n, const char* what) {
                                 std::to_string(n) + " is not positive and finite");
 }
 
-/// Outward unit normal of the spheroid (a = 1, c = γ) at the point whose unit-sphere image is p:
-/// the gradient of x² + y² + z²/γ², i.e. (p.x, p.y, p.z/γ) normalised.
-Vec3 normalAtImage(const Vec3& p, double inverseAspect) {
-  const Vec3 gradient{p.x, p.y, p.z * inverseAspect};
-  return gradient * (1.0 / std::sqrt(dot(gradient, gradient)));
+/// x rounded to 12 significant digits (x > 0): the path-length table's key, so that indices
+/// dispersed by the same factor give one table despite last-bit differences in their ratio.
+double tableKey(double x) {
+  const double scale = std::pow(10.0, 11 - std::floor(std::log10(x)));
+  return std::round(x * scale) / scale;
 }
 }  // namespace
 
@@ -32,14 +33,14 @@ MelanosomeLayer::MelanosomeLayer(double semiMinor, double semiMajor, double inte
                                 std::to_string(interiorMuA) + " is negative or not finite");
   requirePositiveIndex(nLayer, "layer refractive index");
   requirePositiveIndex(nMelanin, "melanin refractive index");
-  entering_ = FresnelPair(nLayer, nMelanin);
-  leaving_ = FresnelPair(nMelanin, nLayer);
-  aspect_ = semiMajor / semiMinor;
-  inverseAspect_ = semiMinor / semiMajor;
+  geometry_.entering = FresnelPair(nLayer, nMelanin);
+  geometry_.leaving = FresnelPair(nMelanin, nLayer);
+  geometry_.aspect = semiMajor / semiMinor;
+  geometry_.inverseAspect = semiMinor / semiMajor;
   muA_perMinorAxis_ = interiorMuA * semiMinor;
 }
 
-MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer)
+MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer, MelanosomeAbsorption absorption)
     : MelanosomeLayer(optics[layer].melanosome.semiMinorAxisCm, optics[layer].melanosome.semiMajorAxisCm,
                       optics.melanosomeInteriorMuA_perCm, optics[layer].refractiveIndex,
                       optics.melaninRefractiveIndex) {
@@ -60,6 +61,27 @@ MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer)
   if (!angleOk)
     throw std::invalid_argument("melanosome interaction: mean scattering angle " +
                                 std::to_string(meanAngleRad_) + " rad must be 0 or in [1e-300, 1e6]");
+  if (absorption == MelanosomeAbsorption::Tabulated)
+    tabulate(optics[layer].refractiveIndex, optics.melaninRefractiveIndex);
+}
+
+void MelanosomeLayer::tabulate(double nLayer, double nMelanin) {
+  tabulated_ = true;
+  if (muA_perMinorAxis_ == 0) return;  // clear melanosomes never absorb: no table needed
+  const auto table = MelanosomePathLengths::shared(tableKey(geometry_.aspect), tableKey(nMelanin / nLayer));
+  const double one = table->absorptionProbability(muA_perMinorAxis_);  // one pass over the table
+  absorbedByWhole_ = MelanosomePathLengths::absorptionByCount(one, wholeCount_);  // count 1 when dispersed
+  absorbedByWholePlusOne_ = MelanosomePathLengths::absorptionByCount(one, wholeCount_ + 1);
+}
+
+double MelanosomeLayer::tabulatedAbsorption(unsigned count) const {
+  if (!tabulated_) throw std::logic_error("MelanosomeLayer::tabulatedAbsorption: the layer traces its melanosomes");
+  if (count == wholeCount_) return absorbedByWhole_;
+  if (count == wholeCount_ + 1 && inComplexes_) return absorbedByWholePlusOne_;
+  throw std::invalid_argument("MelanosomeLayer::tabulatedAbsorption: an interaction meets " +
+                              std::to_string(wholeCount_) +
+                              (inComplexes_ ? " or " + std::to_string(wholeCount_ + 1) : "") +
+                              " melanosomes, not " + std::to_string(count));
 }
 
 unsigned MelanosomeLayer::melanosomesToMeet(Rng& rng) const {
@@ -68,60 +90,31 @@ unsigned MelanosomeLayer::melanosomesToMeet(Rng& rng) const {
 }
 
 bool MelanosomeLayer::absorbedInOne(Rng& rng) const {
-  // Body frame, lengths in units of a (see the header). Eq. 8: |cosα| has density ∝ χ1 + (χ2 − χ1)m
-  // on [0, 1] with χ1 ∝ c = γ and χ2 ∝ a = 1; its inverse is the stable root
-  // m = v(χ1 + χ2)/(χ1 + sqrt(χ1²(1 − v) + χ2²v)) (as in melanosome_orientation_sampling.cpp).
-  const double gamma = aspect_;
-  const double v = rng.uniform();
-  const double cosAlpha = v * (gamma + 1.0) / (gamma + std::sqrt(gamma * gamma * (1.0 - v) + v));
-  const double sinAlpha = std::sqrt((1.0 - cosAlpha) * (1.0 + cosAlpha));
-  const Vec3 incoming{sinAlpha, 0.0, cosAlpha};
-  // The silhouette (spheroid_intersection.h): in the unit-sphere image the ray runs along n ∝
-  // (sinα, 0, cosα/γ); a point uniform on the unit disk normal to n (by rejection from the square,
-  // basis t = (n_z, 0, −n_x) and the y axis), stepped back to the sphere's near side.
-  const double imageZ = cosAlpha * inverseAspect_;
-  const double inverseLength = 1.0 / std::sqrt(sinAlpha * sinAlpha + imageZ * imageZ);
-  const double nx = sinAlpha * inverseLength, nz = imageZ * inverseLength;
-  const DiskPoint disk = sampleUnitDisk(rng);
-  const double depth = std::sqrt(1.0 - disk.radiusSquared);
-  Vec3 image{disk.x * nz - depth * nx, disk.y, -disk.x * nx - depth * nz};  // the entry point's image
-  Vec3 normal = normalAtImage(image, inverseAspect_);
-  double cosTransmitted = 0;
-  const double entryReflectance = entering_.reflectance(dot(incoming, normal), cosTransmitted);
-  if (rng.uniform() < entryReflectance) return false;  // reflected off the wall: never inside
-  Vec3 d = entering_.refract(incoming, normal, cosTransmitted);
-  for (int bounce = 0; bounce < kMaxMelanosomeBounces; ++bounce) {
-    // Exit: |P + tD|² = 1 in the image, D the image of d; t is also the body-frame path length
-    // (the map is linear and d is unit). The two root forms avoid cancellation for either sign of β.
-    const Vec3 imageD{d.x, d.y, d.z * inverseAspect_};
-    const double alpha = dot(imageD, imageD), beta = dot(image, imageD);
-    const double offset = dot(image, image) - 1.0;  // ≈ 0: on the surface
-    const double discriminant = beta * beta - alpha * offset;
-    const double root = discriminant > 0.0 ? std::sqrt(discriminant) : 0.0;
-    double chord = beta <= 0.0 ? (root - beta) / alpha : -offset / (beta + root);
-    if (!(chord > 0.0)) chord = 0.0;  // a surface point heading out: already at the exit
-    // Eq. 1 with the melanin coefficient; 1 − u is exact, so log(1 − u) = log1p(−u).
-    if (muA_perMinorAxis_ > 0 && -std::log(1.0 - rng.uniform()) < muA_perMinorAxis_ * chord)
-      return true;
-    image += imageD * chord;
-    normal = normalAtImage(image, inverseAspect_);
-    double unused = 0;
-    const double wallReflectance = leaving_.reflectance(dot(d, normal), unused);
-    if (rng.uniform() >= wallReflectance) return false;  // transmitted out of the melanosome
-    // Diffuse bounce about the inward normal.
-    d = Frame(-normal).toWorld(sampleCosineHemisphereByDisk(rng));
-  }
-  return false;
+  // Eq. 1 with the melanin coefficient on each chord; 1 − u is exact, so log(1 − u) = log1p(−u).
+  const double mu = muA_perMinorAxis_;
+  const auto absorbedOnChord = [mu, &rng](double chord) {
+    return mu > 0 && -std::log(1.0 - rng.uniform()) < mu * chord;
+  };
+  return walkInsideMelanosome(geometry_, rng, absorbedOnChord) == MelanosomeWalkEnd::Stopped;
 }
 
 MelanosomeEvent MelanosomeLayer::interact(const Vec3& direction, Rng& rng) const {
   MelanosomeEvent event;
   const unsigned count = melanosomesToMeet(rng);
-  for (unsigned i = 0; i < count; ++i) {
-    ++event.melanosomesMet;
-    if (absorbedInOne(rng)) {
+  if (tabulated_) {  // one uniform for all `count` melanosomes: absorbed with 1 − q^count
+    event.melanosomesMet = count;
+    const double absorbed = count == wholeCount_ ? absorbedByWhole_ : absorbedByWholePlusOne_;
+    if (count > 0 && rng.uniform() < absorbed) {
       event.absorbed = true;
       return event;
+    }
+  } else {
+    for (unsigned i = 0; i < count; ++i) {
+      ++event.melanosomesMet;
+      if (absorbedInOne(rng)) {
+        event.absorbed = true;
+        return event;
+      }
     }
   }
   const PolarCosSin theta = sampleExponentialPolarCosSin(meanAngleRad_, rng);  // Algorithm 2

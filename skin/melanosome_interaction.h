@@ -17,9 +17,14 @@
 // traced in the spheroid's body frame (axis = z, unit a = 1) with the ray in the x–z plane at
 // angle α to the axis, and β and the sign of cosα need not be drawn. The outgoing direction only
 // depends on Algorithm 2. MelanosomeLayer holds a layer's constants for one wavelength.
+//
+// Tabulated mode (issue 5, MelanosomeAbsorption::Tabulated): the `count` melanosomes of an
+// interaction absorb the ray with probability 1 − q^count, q from the layer's path-length table
+// (skin/melanosome_path_lengths.h), drawn with one uniform instead of tracing each melanosome.
 #pragma once
 #include "skin/fresnel_pair.h"
 #include "skin/layer.h"
+#include "skin/melanosome_internal_walk.h"
 #include "skin/random.h"
 #include "skin/skin_optics.h"
 #include "skin/vector3.h"
@@ -32,9 +37,9 @@ struct MelanosomeEvent {
   unsigned melanosomesMet = 0;  ///< melanosomes tested for absorption
 };
 
-/// Bound on internal wall bounces in one melanosome; past it the ray is let out through the wall
-/// (with 1.7/1.4 and cosine-perturbed bounces the chance of reaching it is below 1e-300).
-inline constexpr int kMaxMelanosomeBounces = 10000;
+/// How an interaction decides absorption: each melanosome traced (exact, the default) or the
+/// tabulated probability of the melanosomes met (skin/melanosome_path_lengths.h).
+enum class MelanosomeAbsorption { Traced, Tabulated };
 
 /// The constants of one layer's melanosomes at one wavelength, checked once.
 class MelanosomeLayer {
@@ -42,26 +47,34 @@ class MelanosomeLayer {
   MelanosomeLayer() = default;
   /// Throws std::invalid_argument for a layer without a valid spheroid (0 < a <= c) or with a
   /// negative interior coefficient, non-positive indices or an invalid θo.
-  MelanosomeLayer(const SkinOptics& optics, Layer layer);
+  MelanosomeLayer(const SkinOptics& optics, Layer layer,
+                  MelanosomeAbsorption absorption = MelanosomeAbsorption::Traced);
   /// One melanosome (a ≤ c in any one unit, interior coefficient in the inverse of that unit).
   MelanosomeLayer(double semiMinor, double semiMajor, double interiorMuA, double nLayer,
                   double nMelanin);
 
   /// One interaction: a dispersed melanosome or a complex, then Algorithm 2 if not absorbed.
   MelanosomeEvent interact(const Vec3& direction, Rng& rng) const;
-  /// One melanosome met by a ray: true if the ray is absorbed inside it.
+  /// One melanosome met by a ray: true if the ray is absorbed inside it (always traced).
   bool absorbedInOne(Rng& rng) const;
+  /// Tabulated mode: the probability that `count` melanosomes absorb (1 − q^count); the traced
+  /// mode's law, for the counts an interaction can meet (floor(m) and floor(m) + 1). Throws
+  /// std::logic_error in the traced mode and std::invalid_argument for another count.
+  double tabulatedAbsorption(unsigned count) const;
+  bool tabulated() const { return tabulated_; }
 
  private:
   unsigned melanosomesToMeet(Rng& rng) const;
-  double aspect_ = 1;            // γ = c/a
-  double inverseAspect_ = 1;     // 1/γ
+  void tabulate(double nLayer, double nMelanin);
+  MelanosomeGeometry geometry_;  // γ = c/a, 1/γ, epidermis → melanin and back
   double muA_perMinorAxis_ = 0;  // interior coefficient × a (chords are in units of a)
-  FresnelPair entering_, leaving_;  // epidermis → melanin and back
   bool inComplexes_ = false;
   unsigned wholeCount_ = 1;      // floor(m)
   double fractionalCount_ = 0;   // m − floor(m)
   double meanAngleRad_ = 0;      // θo of Algorithm 2
+  bool tabulated_ = false;
+  double absorbedByWhole_ = 0;         // tabulated: 1 − q^floor(m)
+  double absorbedByWholePlusOne_ = 0;  // tabulated: 1 − q^(floor(m) + 1)
 };
 
 MelanosomeEvent interactWithMelanosomes(const Vec3& direction, const SkinOptics& optics, Layer layer,

@@ -31,7 +31,9 @@ SkinWalk::SkinWalk(const SkinOptics& optics, WalkOptions options)
     const double muMelanosome = options.melanosomes ? lo.melanosome.mu_perCm : 0.0;
     const double muRayleigh = options.rayleigh ? lo.muRayleigh_perCm : 0.0;
     const double muAPlusMelanosome = lo.muATotal_perCm + muMelanosome;
-    if (muMelanosome > 0) melanosomes_[slabCount_] = MelanosomeLayer(optics, layer);
+    if (muMelanosome > 0)
+      melanosomes_[slabCount_] = MelanosomeLayer(
+          optics, layer, options.tabulatedMelanosomes ? MelanosomeAbsorption::Tabulated : MelanosomeAbsorption::Traced);
     slabs_[slabCount_++] = Slab{layer,
                                 depthCm,
                                 depthCm + lo.thicknessCm,

@@ -87,6 +87,7 @@ class SkinWalk {
   SkinPath traceEntered(const Vec3& transmittedDirection, Rng& rng, LayerPathLengths* lengths = nullptr) const;
 
   const SkinOptics& optics() const { return optics_; }
+  const WalkOptions& options() const { return options_; }
 
  private:
   /// Per-layer constants, computed once per walk (the hot loop only reads them).

@@ -1,0 +1,56 @@
+// The user's cache of HyLIoS exit tables (skin/exit_table.h) on disk, shared by `hylios render`,
+// `figure` and `spectrum` in the `table` skin mode.
+//
+// Folder: $HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios, else $HOME/.cache/hylios, created when
+// needed. A table lives in "<folder>/exit-<key in 16 hex digits>.hxt"; get() reads it, verifies
+// it (magic, version, key, size, checksum, consistent counts) and otherwise builds the table and
+// writes it atomically, so a truncated, corrupt, stale or foreign file is rebuilt. When the folder
+// cannot be created or written, tables are built in memory and one warning is printed.
+// Thread-safe: tables for different keys are built in parallel; tables already obtained are
+// kept in memory for the life of the cache object.
+#pragma once
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "skin/exit_table.h"
+#include "skin/skin_walk.h"
+
+namespace hylios {
+
+class ExitTableCache {
+ public:
+  /// `folder` empty: memory only (nothing read or written).
+  explicit ExitTableCache(std::filesystem::path folder);
+
+  /// The folder from the environment (see above); empty when neither HYLIOS_CACHE_DIR,
+  /// XDG_CACHE_HOME nor HOME is set.
+  static std::filesystem::path userFolder();
+  /// The process-wide cache in userFolder(), made on first use.
+  static ExitTableCache& shared();
+
+  /// The table of `walk` with `settings`: from memory, from disk, or built (and written).
+  std::shared_ptr<const skin::ExitTable> get(const skin::SkinWalk& walk, const skin::ExitTableSettings& settings);
+
+  const std::filesystem::path& folder() const { return folder_; }
+  std::filesystem::path fileFor(std::uint64_t key) const;
+  std::size_t loaded() const { return loaded_; }   ///< tables read from disk
+  std::size_t built() const { return built_; }     ///< tables built by walks
+  std::size_t rejected() const { return rejected_; }  ///< files found but invalid (then rebuilt)
+
+ private:
+  bool folderUsable();
+
+  std::filesystem::path folder_;
+  std::mutex mutex_;
+  std::map<std::uint64_t, std::shared_ptr<const skin::ExitTable>> tables_;
+  std::atomic<std::size_t> loaded_{0}, built_{0}, rejected_{0};
+  std::once_flag folderChecked_, warned_;
+  bool usable_ = false;
+};
+
+}  // namespace hylios

@@ -1,0 +1,146 @@
+// Tabulated exit statistics of the HyLIoS walk (issue 5, the `table` skin mode): for one
+// (SkinOptics, WalkOptions) the walk's outcome is tabulated once and then sampled at the cost of a
+// few table look-ups instead of a whole random walk.
+//
+// What is exact and what is tabulated. A ray from air first meets the rough surface; that step
+// (SkinWalk::enterFromAir) is simulated exactly, so surface reflection (probability and direction)
+// is the walk's own. A transmitted ray continues with direction t (t.z = μ_t > 0). By the symmetry of
+// the plane-parallel stack about z, everything after entry depends on μ_t only, when the exit offset
+// and exit direction are measured relative to t's azimuth φ_t. The table holds K bins at cosines
+// μ_k = (k + 1)/K (the last at normal transmission, where most rays go); bin k is filled from N walks
+// SkinWalk::traceEntered((√(1−μ_k²), 0, μ_k)), and a ray with μ_t between two centres uses the lower
+// or upper bin with the linear-interpolation probabilities (one uniform number; μ_t < 1/K uses bin
+// 0). Each bin keeps:
+//   * outcome counts: subsurface exit, transmitted (truncated stacks), event limit, and absorbed by
+//     layer, in a melanosome or not;
+//   * subsurface exits: a joint histogram of exit radius r (R log-spaced bins between kMinRadiusCm
+//     and kMaxRadiusCm, within a bin log-uniform; plus [0, kMinRadiusCm) uniform in area and an
+//     overflow [kMaxRadiusCm, largest radius seen) uniform) × offset azimuth |φ − φ_t| ∈ [0, π]
+//     (A uniform bins; the sign is equally likely by the y → −y mirror symmetry);
+//   * subsurface exit direction: P polar bins uniform in cosθ (θ from the outward normal, −z),
+//     uniform within a bin; the exit azimuth is drawn uniformly (the renderer uses its own exit
+//     lobe, skin_material.h, and hemispherical spectra do not need it);
+//   * transmitted direction: P polar bins the same way (from +z); its lateral offset is not kept;
+//   * exact sums for the hemispherical quantities with standard errors (BinStatistics).
+// SkinPath::events of a sampled path counts the entry crossing only.
+//
+// Building: bins × rays walks, ray i of bin k on Rng(seed, k, i), in fixed chunks run in parallel
+// (TBB) and merged in chunk order: the table is the same at any thread count. With
+// ExitTableSettings::tabulatedMelanosomes the build walks use WalkOptions::tabulatedMelanosomes.
+//
+// File format (little-endian): "HYLXTAB1" | u64 format version | u64 key | u64 payload size |
+// u64 FNV-1a 64 of the payload | payload (u64 and IEEE-754 doubles). The key (ExitTable::key)
+// hashes every input: all SkinOptics and WalkOptions fields, all settings and the format version.
+// read() returns nullopt, never throws or crashes, for a missing, truncated, corrupt, stale or
+// foreign file; write() is atomic (a temporary file renamed into place).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "skin/layer.h"
+#include "skin/random.h"
+#include "skin/skin_optics.h"
+#include "skin/skin_walk.h"
+#include "skin/statistics.h"
+#include "skin/vector3.h"
+
+namespace hylios::skin {
+
+/// Bump when the file layout or the walk's physics changes (stale tables are then rebuilt).
+inline constexpr std::uint64_t kExitTableFormatVersion = 2;
+
+struct ExitTableSettings {
+  int cosineBins = 12;                 ///< K, bins of the transmitted direction's cosine
+  std::uint64_t raysPerBin = 40000;    ///< N, walks per bin
+  std::uint64_t seed = 1;
+  int radialBins = 96;                 ///< R, log-spaced between kMinRadiusCm and kMaxRadiusCm
+  int offsetAzimuthBins = 8;           ///< A, over |φ − φ_t| ∈ [0, π]
+  int polarBins = 32;                  ///< P, uniform in cosθ of the exit direction
+  bool tabulatedMelanosomes = true;    ///< build with WalkOptions::tabulatedMelanosomes
+};
+
+/// Exact per-bin estimates (from the build's walks) with standard errors.
+struct BinStatistics {
+  double transmittedCosine = 0;        ///< μ_k
+  std::uint64_t rays = 0;
+  Estimate subsurface;                 ///< P(subsurface exit | entered along μ_k)
+  Estimate transmitted;
+  Estimate absorbed;
+  Estimate eventLimited;
+  std::array<Estimate, kLayerCount> absorbedByLayer;
+  Estimate meanExitRadiusCm;           ///< over subsurface exits
+};
+
+class ExitTable {
+ public:
+  static constexpr double kMinRadiusCm = 1e-5;
+  static constexpr double kMaxRadiusCm = 30;
+
+  /// The key of the table for these inputs (FNV-1a 64 of every field, skin/content_hash.h).
+  static std::uint64_t key(const SkinOptics& optics, const WalkOptions& walk, const ExitTableSettings& settings);
+  /// Runs the walks. Throws std::invalid_argument for settings out of range (bins < 1 or above
+  /// 4096, raysPerBin < 2 or above 2^32) and whatever SkinWalk's constructor throws.
+  static ExitTable build(const SkinWalk& walk, const ExitTableSettings& settings);
+  /// The table stored at `path` if it exists, is intact and was built for exactly these inputs;
+  /// otherwise nullopt with the reason in *whyNot (when not null).
+  static std::optional<ExitTable> read(const std::filesystem::path& path, const SkinWalk& walk,
+                                       const ExitTableSettings& settings, std::string* whyNot = nullptr);
+  /// Writes the table atomically. Throws std::runtime_error when the file cannot be written.
+  void write(const std::filesystem::path& path) const;
+
+  /// One ray arriving from air along `incident` (z > 0), like SkinWalk::trace.
+  SkinPath sample(const Vec3& incident, Rng& rng) const;
+  /// The tabulated part alone, like SkinWalk::traceEntered: a ray that has just crossed into the
+  /// skin along `transmitted` (unit, z > 0).
+  SkinPath sampleEntered(const Vec3& transmitted, Rng& rng) const;
+
+  std::uint64_t key() const { return key_; }
+  const ExitTableSettings& settings() const { return settings_; }
+  const SkinWalk& walk() const { return walk_; }
+  int bins() const { return settings_.cosineBins; }
+  double binCosine(int bin) const { return (bin + 1.0) / settings_.cosineBins; }
+  BinStatistics statistics(int bin) const;
+
+  // The stored distributions (for tests): the fraction of a bin's subsurface exits per radial
+  // cell (0: [0, kMinRadiusCm), 1..R: log bins, R+1: overflow), per offset-azimuth bin, per polar bin.
+  std::vector<double> radialDistribution(int bin) const;
+  std::vector<double> offsetAzimuthDistribution(int bin) const;
+  std::vector<double> exitPolarDistribution(int bin) const;
+  /// Edges of radial cell c: [radialCellLowerCm(c), radialCellUpperCm(c)).
+  double radialCellLowerCm(int bin, int cell) const;
+  double radialCellUpperCm(int bin, int cell) const;
+
+ private:
+  struct Bin {
+    std::uint64_t rays = 0, subsurface = 0, transmitted = 0, eventLimited = 0;
+    std::array<std::uint64_t, kLayerCount> absorbed{}, absorbedInMelanosome{};
+    std::vector<std::uint64_t> offsetCounts;       ///< (R + 2) × A, radial-major
+    std::vector<std::uint64_t> exitPolarCounts;    ///< P
+    std::vector<std::uint64_t> transmittedPolarCounts;  ///< P
+    double largestRadiusCm = 0;
+    double radiusSumCm = 0, radiusSquaresSumCm2 = 0;
+    // Sampling tables (derived, not stored): cumulative counts.
+    std::vector<std::uint64_t> outcomeCdf, offsetCdf, exitPolarCdf, transmittedPolarCdf;
+    void merge(const Bin& other);
+  };
+
+  ExitTable(const SkinWalk& walk, const ExitTableSettings& settings);
+  Bin& newBin();
+  void prepareSampling();
+  std::string serializePayload() const;
+  bool parsePayload(const std::string& payload, std::string* whyNot);
+  void tally(Bin& bin, const SkinPath& path) const;
+  int radialCell(double radiusCm) const;
+  SkinPath sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng) const;
+
+  SkinWalk walk_;
+  ExitTableSettings settings_;
+  std::uint64_t key_ = 0;
+  std::vector<Bin> bins_;
+};
+
+}  // namespace hylios::skin
