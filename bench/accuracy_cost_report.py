@@ -476,10 +476,11 @@ def report(study, spectra, renders, plots, root, title_note):
     env = study.env
     md = ["# Accuracy versus cost", "",
           f"Written by `bench/accuracy-cost{' --quick' if env['quick'] == '1' else ''}`; rerun it to refresh "
-          f"(about 20 minutes on 2 cores; `--quick` for a smoke run). {title_note}", "",
+          f"(5–15 minutes on a shared 2-core machine; `--quick` for a smoke run of 1–2 minutes). {title_note}", "",
           "## Machine", "", markdown_table(["", ""], machine_rows(env, root)), "",
-          "Wall times depend on how busy the machine was (the load averages above); CPU times (user + system,"
-          " all threads) are the steadier measure of cost.", "",
+          "Wall times depend on how busy the machine was (the load averages above, and each run's in "
+          "`accuracy-cost/runs.csv`); CPU times (user + system, all threads) are the steadier measure of cost. "
+          "Errors do not depend on the machine: every run has a fixed seed.", "",
           "## Definitions", "",
           "* **Spectra** (`hylios spectrum --specimen S1 --angle 45 --wavelengths "
           f"{env['wavelengths']}`, {spectra['wavelengths']} wavelengths): error = RMS over wavelengths of "

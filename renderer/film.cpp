@@ -40,6 +40,7 @@ Film::Film(const FilmDesc& desc) : desc_(desc), width_(desc.width), height_(desc
     }
     std::vector<std::size_t> indices;
     for (const double wavelength : band.channelWavelengths()) {
+      positionInBand_.push_back(indices.size());
       indices.push_back(channels_.size());
       channels_.push_back({wavelength, b});
     }
@@ -82,7 +83,24 @@ void Film::addSample(int x, int y, std::size_t channel, double radiance) {
 double Film::value(int x, int y, std::size_t channel) const {
   requireInside("Film::value", x, y, channel, width_, height_, channels_.size());
   const std::size_t s = slot(x, y, channel);
-  return counts_[s] == 0 ? 0.0 : sums_[s] / static_cast<double>(counts_[s]);
+  return counts_[s] == 0 ? interpolatedValue(x, y, channel) : sums_[s] / static_cast<double>(counts_[s]);
+}
+
+double Film::interpolatedValue(int x, int y, std::size_t channel) const {
+  const std::vector<std::size_t>& band = bandChannels_[channels_[channel].band];
+  const std::size_t at = positionInBand_[channel];
+  auto sampled = [&](std::size_t c) { return counts_[slot(x, y, c)] > 0; };
+  auto mean = [&](std::size_t c) { return sums_[slot(x, y, c)] / static_cast<double>(counts_[slot(x, y, c)]); };
+  std::size_t below = at, above = at;
+  while (below > 0 && !sampled(band[below])) --below;
+  while (above + 1 < band.size() && !sampled(band[above])) ++above;
+  const bool hasBelow = sampled(band[below]), hasAbove = sampled(band[above]);
+  if (!hasBelow && !hasAbove) return 0.0;
+  if (!hasAbove) return mean(band[below]);
+  if (!hasBelow) return mean(band[above]);
+  const double lo = channels_[band[below]].wavelengthNm, hi = channels_[band[above]].wavelengthNm;
+  const double t = (channels_[channel].wavelengthNm - lo) / (hi - lo);
+  return (1 - t) * mean(band[below]) + t * mean(band[above]);
 }
 
 void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, int samplesPerPixelDone) {

@@ -1,7 +1,11 @@
 // The spectral film: per pixel and per channel (one channel per band wavelength), the sum of
 // radiance samples and their count. Each camera path carries one wavelength, drawn by
 // sampleChannel(): a band uniformly, then a channel of that band uniformly; a channel's
-// estimate is its sample mean (sum / count), so every band converges independently.
+// estimate is its sample mean (sum / count), so every band converges independently. At fewer
+// samples than a band has channels some channels of a pixel get none; their value is then
+// interpolated linearly in wavelength between the nearest sampled channels of the same band
+// (the nearest one at the band's ends), never left at 0, which would darken the band by the
+// fraction of channels missed (docs/interpretations.md).
 //
 // Thread safety: addSample() for distinct pixels may run concurrently (tiles own pixels).
 #pragma once
@@ -32,7 +36,8 @@ class Film {
   std::size_t sampleChannel(double u) const;
 
   void addSample(int x, int y, std::size_t channel, double radiance);
-  /// Mean radiance of a pixel's channel (0 when it got no sample yet).
+  /// Mean radiance of a pixel's channel; for a channel without samples, interpolated from the
+  /// band's sampled channels (see above); 0 while the pixel's band has no sample at all.
   double value(int x, int y, std::size_t channel) const;
   std::uint32_t sampleCount(int x, int y, std::size_t channel) const;
   /// Samples per pixel accumulated so far (recorded in EXR headers).
@@ -49,6 +54,7 @@ class Film {
   void restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, int samplesPerPixelDone);
 
  private:
+  double interpolatedValue(int x, int y, std::size_t channel) const;
   std::size_t slot(int x, int y, std::size_t channel) const {
     return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) *
                channels_.size() + channel;
@@ -57,6 +63,7 @@ class Film {
   int width_, height_;
   std::vector<FilmChannel> channels_;
   std::vector<std::vector<std::size_t>> bandChannels_;
+  std::vector<std::size_t> positionInBand_;  ///< channel → its index in bandChannels_[band]
   std::vector<double> sums_;
   std::vector<std::uint32_t> counts_;
   int samplesPerPixelDone_ = 0;

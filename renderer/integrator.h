@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "renderer/camera.h"
@@ -66,6 +67,14 @@ struct RenderOptions {
   std::function<void(int samplesDone, double passSeconds)> onPassDone;
 };
 constexpr double kAdaptivePassSeconds = 2.0;
+
+/// Options for a render without a progress bar (tests, batch use).
+inline RenderOptions quietRenderOptions(std::string label) {
+  RenderOptions options;
+  options.progressBar = false;
+  options.label = std::move(label);
+  return options;
+}
 
 class Integrator {
  public:

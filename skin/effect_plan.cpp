@@ -43,7 +43,11 @@ struct PilotRun {
 
 PilotRun runPilot(const SkinOptics& optics, const WalkOptions& walkOptions, double incidenceDeg,
                   std::size_t angleIndex, const PlanOptions& options) {
-  const SkinWalk walk(optics, walkOptions);
+  // The pilot only estimates mean path lengths: tabulated melanosome absorption (the same law up to
+  // the table's 0.2 % error on melanosome absorption) makes it 3-5x cheaper.
+  WalkOptions pilotOptions = walkOptions;
+  pilotOptions.tabulatedMelanosomes = true;
+  const SkinWalk walk(optics, pilotOptions);
   const Vec3 incident = incidentDirection(incidenceDeg);
   const std::uint64_t stream = mix64(wavelengthStream(optics.wavelengthNm) ^ kPilotStream) + angleIndex;
   PilotRun run;

@@ -101,8 +101,40 @@ TEST(Film, ValueIsTheMeanOfAChannelsSamples) {
   EXPECT_EQ(film.sampleCount(1, 1, 3), 3u);
   EXPECT_EQ(film.sampleCount(1, 1, 2), 0u);  // neighbours untouched
   EXPECT_EQ(film.value(0, 1, 3), 0.0);
+  EXPECT_EQ(film.value(1, 1, 0), 0.0);  // band "uv365" of that pixel has no sample yet
   film.setSamplesPerPixelDone(16);
   EXPECT_EQ(film.samplesPerPixelDone(), 16);
+}
+
+// Channels a pixel's samples missed take the linear interpolation in wavelength between the
+// nearest sampled channels of their band, or the nearest one at the band's ends.
+TEST(Film, UnsampledChannelsAreInterpolatedWithinTheirBand) {
+  Film film(threeBandDesc());  // band "vis": channels 1..4 at 400, 500, 600, 700 nm
+  film.addSample(0, 0, 2, 2.0);  // 500 nm
+  EXPECT_DOUBLE_EQ(film.value(0, 0, 1), 2.0);  // 400 nm: below the first sampled channel
+  EXPECT_DOUBLE_EQ(film.value(0, 0, 4), 2.0);  // 700 nm: beyond the last
+  film.addSample(0, 0, 4, 8.0);  // 700 nm
+  EXPECT_DOUBLE_EQ(film.value(0, 0, 3), 5.0);  // 600 nm: halfway between 2 and 8
+  EXPECT_DOUBLE_EQ(film.value(0, 0, 1), 2.0);
+  EXPECT_EQ(film.value(0, 0, 0), 0.0);  // other bands do not lend values
+  EXPECT_EQ(film.value(0, 0, 5), 0.0);
+}
+
+// Fewer samples than channels must not darken the band (each unsampled channel used to read 0):
+// with constant radiance 1 and 2 samples per pixel into a 4-channel band, every channel reads 1.
+TEST(Film, FewerSamplesThanChannelsDoNotDarkenTheBand) {
+  FilmDesc desc;
+  desc.width = 50;
+  desc.height = 20;
+  desc.bands = {rangeBand("vis", 400, 700, 100)};
+  Film film(desc);
+  hylios::skin::Rng rng(11, 2);
+  for (int y = 0; y < desc.height; ++y)
+    for (int x = 0; x < desc.width; ++x)
+      for (int s = 0; s < 2; ++s) film.addSample(x, y, film.sampleChannel(rng.uniform()), 1.0);
+  for (int y = 0; y < desc.height; ++y)
+    for (int x = 0; x < desc.width; ++x)
+      for (std::size_t c = 0; c < 4; ++c) ASSERT_DOUBLE_EQ(film.value(x, y, c), 1.0) << x << "," << y << " channel " << c;
 }
 
 TEST(Film, MonteCarloMeanPerChannelConverges) {

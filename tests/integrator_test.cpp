@@ -110,7 +110,7 @@ TEST(Integrator, WhiteFurnaceImageBackgroundIsExactAndDepthZeroIsBlack) {
   SceneDesc scene = sphereScene(diffuse(1.0), 1.5, 0);
   Film film(scene.film);
   const Integrator integrator(scene, {550});
-  integrator.render(film, {false, "test"});
+  integrator.render(film, quietRenderOptions("test"));
   EXPECT_DOUBLE_EQ(film.value(0, 0, 0), 1.5);                    // sky
   EXPECT_DOUBLE_EQ(film.value(12, 12, 0), 0.0);                  // sphere, no bounce allowed
 }
@@ -212,11 +212,11 @@ TEST(Integrator, SameSeedSameImageAtOneAndTwoThreads) {
   Film one(scene.film), two(scene.film);
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-    integrator.render(one, {false, "1"});
+    integrator.render(one, quietRenderOptions("1"));
   }
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-    integrator.render(two, {false, "2"});
+    integrator.render(two, quietRenderOptions("2"));
   }
   double total = 0;
   for (int y = 0; y < 16; ++y)

@@ -144,7 +144,7 @@ TEST_P(RenderRegression, MatchesTheReferenceWithinNoiseAndDetectsAFivePercentCha
   std::vector<double> wavelengths;
   for (const FilmChannel& c : film.channels()) wavelengths.push_back(c.wavelengthNm);
   const Integrator integrator(scene, wavelengths);
-  integrator.render(film, {false, param.scene});
+  integrator.render(film, quietRenderOptions(param.scene));
   const Image test = fromFilm(film);
   const Image reference = readReference(root + "/tests/data/regression/" + param.scene + ".exr", film);
   ASSERT_EQ(reference.width, test.width);
