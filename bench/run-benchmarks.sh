@@ -58,5 +58,9 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //')
   echo '```'
   echo "$curve"
   echo '```'
+  if [[ -f "$root/docs/benchmarks-recorded.md" ]]; then
+    echo
+    sed -e 's/^## /### /' -e 's/^# /## /' "$root/docs/benchmarks-recorded.md"
+  fi
 } > "$root/docs/benchmarks.md"
 cat "$root/docs/benchmarks.md"
