@@ -18,6 +18,7 @@
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
+#include "tests/test_spectra.h"
 
 using namespace hylios::skin;
 
@@ -25,10 +26,7 @@ namespace {
 
 const std::string kRoot = HYLIOS_SOURCE_DIR;
 
-const SpectralDatabase& spectra() {
-  static const SpectralDatabase database = SpectralDatabase::load(kRoot + "/assets/spectra");
-  return database;
-}
+using hylios::test::spectra;
 
 SkinOptics specimenOptics(const std::string& name, double wavelengthNm) {
   return computeSkinOptics(loadSpecimen(name, kRoot + "/scenes/specimens"), spectra(), wavelengthNm);

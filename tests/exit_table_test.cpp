@@ -16,6 +16,7 @@
 #include "skin/spectral_database.h"
 #include "skin/specimen.h"
 #include "tests/chi2.h"
+#include "tests/test_spectra.h"
 
 using namespace hylios;
 using namespace hylios::skin;
@@ -24,10 +25,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-const SpectralDatabase& spectra() {
-  static const SpectralDatabase db = SpectralDatabase::load(spectraDir());
-  return db;
-}
+using hylios::test::spectra;
 
 SkinOptics s1(double wavelengthNm) {
   static const Specimen specimen = loadSpecimen("S1", specimenDir());

@@ -21,6 +21,7 @@
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
+#include "tests/test_spectra.h"
 
 using namespace hylios::skin;
 
@@ -275,10 +276,7 @@ TEST(MelanosomeLayerTabulated, InteractionsAbsorbLikeTracedOnes) {
 }
 
 namespace {
-const SpectralDatabase& spectra() {
-  static const SpectralDatabase database = SpectralDatabase::load(std::string(HYLIOS_SOURCE_DIR) + "/assets/spectra");
-  return database;
-}
+using hylios::test::spectra;
 }  // namespace
 
 TEST(SkinWalkTabulated, WholeWalksAgreeWithTracedMelanosomes) {

@@ -11,6 +11,7 @@
 #include "renderer/skin_walk_cache.h"
 #include "renderer/texture_map.h"
 #include "skin/random.h"
+#include "tests/test_spectra.h"
 
 using namespace hylios;
 
@@ -26,10 +27,7 @@ MaterialDesc skinDesc() {
   return m;
 }
 
-const skin::SpectralDatabase& spectra() {
-  static const skin::SpectralDatabase database = skin::SpectralDatabase::load(spectraDir());
-  return database;
-}
+using hylios::test::spectra;
 
 }  // namespace
 

@@ -15,6 +15,7 @@
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
+#include "tests/test_spectra.h"
 
 using namespace hylios::skin;
 
@@ -22,10 +23,7 @@ namespace {
 
 const std::string kRoot = HYLIOS_SOURCE_DIR;
 
-const SpectralDatabase& spectra() {
-  static const SpectralDatabase database = SpectralDatabase::load(kRoot + "/assets/spectra");
-  return database;
-}
+using hylios::test::spectra;
 
 Estimate reflectance(const std::string& specimenName, double wavelengthNm, double angleDeg,
                      std::uint64_t rays) {

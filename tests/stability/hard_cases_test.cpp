@@ -20,6 +20,7 @@
 #include "skin/spectral_database.h"
 #include "skin/spheroid_intersection.h"
 #include "skin/surface_normal_sampling.h"
+#include "tests/test_spectra.h"
 
 using namespace hylios::skin;
 
@@ -27,10 +28,7 @@ namespace {
 
 const std::string kRoot = HYLIOS_SOURCE_DIR;
 
-const SpectralDatabase& spectra() {
-  static const SpectralDatabase database = SpectralDatabase::load(kRoot + "/assets/spectra");
-  return database;
-}
+using hylios::test::spectra;
 
 Specimen specimen(const std::string& name) { return loadSpecimen(name, kRoot + "/scenes/specimens"); }
 
