@@ -422,7 +422,7 @@ def reading(study, spectra, renders):
             if short:
                 text += (f": below {e['channels']} spp a pixel's samples cannot cover all {e['channels']} channels "
                          "(one channel per sample, stratified), and the film reports a channel without a sample as 0 "
-                         "(renderer/film.h, Film::value), so the image comes out dark by about 1 − spp/channels "
+                         "(renderer/image/film.h, Film::value), so the image comes out dark by about 1 − spp/channels "
                          f"(e.g. {1 - short[0]['spp'] / e['channels']:.2f} at {short[0]['spp']} spp)")
             text += "."
         lines.append(text)

@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "fuzz/fuzz_check.h"
-#include "renderer/scene_file.h"
+#include "renderer/scene/scene_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hylios;

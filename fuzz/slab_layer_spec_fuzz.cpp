@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "fuzz/fuzz_check.h"
-#include "renderer/slab_layer_spec.h"
+#include "app/slab_layer_spec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hylios;

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "skin/melanosome_path_lengths.h"
-#include "skin/statistics.h"
+#include "skin/core/statistics.h"
 #include "skin/skin_simulation.h"
 
 namespace hylios::skin {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "skin/skin_tally.h"
-#include "skin/statistics.h"
+#include "skin/core/statistics.h"
 
 namespace hylios::skin {
 

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "skin/content_hash.h"
+#include "skin/core/content_hash.h"
 
 namespace hylios::skin {
 namespace {

@@ -42,11 +42,11 @@
 #include <vector>
 
 #include "skin/layer.h"
-#include "skin/random.h"
+#include "skin/core/random.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_walk.h"
-#include "skin/statistics.h"
-#include "skin/vector3.h"
+#include "skin/core/statistics.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 
@@ -80,7 +80,7 @@ class ExitTable {
   static constexpr double kMinRadiusCm = 1e-5;
   static constexpr double kMaxRadiusCm = 30;
 
-  /// The key of the table for these inputs (FNV-1a 64 of every field, skin/content_hash.h).
+  /// The key of the table for these inputs (FNV-1a 64 of every field, skin/core/content_hash.h).
   static std::uint64_t key(const SkinOptics& optics, const WalkOptions& walk, const ExitTableSettings& settings);
   /// Runs the walks. Throws std::invalid_argument for settings out of range (bins < 1 or above
   /// 4096, raysPerBin < 2 or above 2^32) and whatever SkinWalk's constructor throws.

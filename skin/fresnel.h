@@ -2,7 +2,7 @@
 // mirror / Snell directions. Plain functions in double precision, for the per-event hot path of the
 // slab walk and the HyLIoS walk (paper Sec. 4: "Fresnel ... at every layer boundary").
 #pragma once
-#include "skin/vector3.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

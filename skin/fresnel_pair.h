@@ -5,7 +5,7 @@
 #pragma once
 #include <cmath>
 
-#include "skin/vector3.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

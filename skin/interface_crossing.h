@@ -2,8 +2,8 @@
 // or transmission (paper Sec. 4: Fresnel and total internal reflection at every layer boundary).
 // Shared by the generic layered slab and the HyLIoS skin walk.
 #pragma once
-#include "skin/random.h"
-#include "skin/vector3.h"
+#include "skin/core/random.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

@@ -11,9 +11,9 @@
 #include <string>
 
 #include "skin/fresnel.h"
-#include "skin/henyey_greenstein.h"
+#include "skin/sampling/henyey_greenstein.h"
 #include "skin/interface_crossing.h"
-#include "skin/vector3.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 namespace {

@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "skin/random.h"
-#include "skin/statistics.h"
+#include "skin/core/random.h"
+#include "skin/core/statistics.h"
 
 namespace hylios::skin {
 

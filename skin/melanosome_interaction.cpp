@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "skin/exponential_polar_sampling.h"
+#include "skin/sampling/exponential_polar_sampling.h"
 #include "skin/melanosome_path_lengths.h"
-#include "skin/polar_rejection_sampling.h"
+#include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/spheroid.h"
 
 namespace hylios::skin {

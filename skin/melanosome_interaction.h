@@ -25,9 +25,9 @@
 #include "skin/fresnel_pair.h"
 #include "skin/layer.h"
 #include "skin/melanosome_internal_walk.h"
-#include "skin/random.h"
+#include "skin/core/random.h"
 #include "skin/skin_optics.h"
-#include "skin/vector3.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

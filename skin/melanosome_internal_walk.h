@@ -13,9 +13,9 @@
 #include <cmath>
 
 #include "skin/fresnel_pair.h"
-#include "skin/polar_rejection_sampling.h"
-#include "skin/random.h"
-#include "skin/vector3.h"
+#include "skin/sampling/polar_rejection_sampling.h"
+#include "skin/core/random.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

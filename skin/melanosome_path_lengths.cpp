@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "skin/melanosome_internal_walk.h"
-#include "skin/random.h"
+#include "skin/core/random.h"
 
 namespace hylios::skin {
 namespace {

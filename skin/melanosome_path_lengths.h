@@ -20,7 +20,7 @@
 #include <memory>
 #include <vector>
 
-#include "skin/statistics.h"
+#include "skin/core/statistics.h"
 
 namespace hylios::skin {
 

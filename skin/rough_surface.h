@@ -7,14 +7,14 @@
 // points back, meets the surface again (a new normal, a new Fresnel test), so no energy is lost.
 // After kMaxSurfaceBounces attempts the smooth macro-surface normal is used, which always ends it.
 //
-// θs is drawn by the rejection sampler of skin/polar_rejection_sampling.h (same density as
-// skin/surface_normal_sampling.h's inversion, several times cheaper); RoughSurface keeps its
+// θs is drawn by the rejection sampler of skin/sampling/polar_rejection_sampling.h (same density as
+// skin/sampling/surface_normal_sampling.h's inversion, several times cheaper); RoughSurface keeps its
 // constants for one aspect ratio, the free functions build one per call.
 #pragma once
 #include "skin/interface_crossing.h"
-#include "skin/polar_rejection_sampling.h"
-#include "skin/random.h"
-#include "skin/vector3.h"
+#include "skin/sampling/polar_rejection_sampling.h"
+#include "skin/core/random.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

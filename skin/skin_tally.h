@@ -8,7 +8,7 @@
 
 #include "skin/layer.h"
 #include "skin/skin_walk.h"
-#include "skin/statistics.h"
+#include "skin/core/statistics.h"
 
 namespace hylios::skin {
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "skin/interface_crossing.h"
-#include "skin/polar_rejection_sampling.h"
-#include "skin/rayleigh_sampling.h"
+#include "skin/sampling/polar_rejection_sampling.h"
+#include "skin/sampling/rayleigh_sampling.h"
 
 namespace hylios::skin {
 namespace {

@@ -20,10 +20,10 @@
 
 #include "skin/layer.h"
 #include "skin/melanosome_interaction.h"
-#include "skin/random.h"
+#include "skin/core/random.h"
 #include "skin/rough_surface.h"
 #include "skin/skin_optics.h"
-#include "skin/vector3.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

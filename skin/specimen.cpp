@@ -13,7 +13,7 @@
 #include <string_view>
 #include <toml++/toml.h>
 
-#include "skin/toml_location.h"
+#include "skin/core/toml_location.h"
 
 namespace hylios::skin {
 namespace {

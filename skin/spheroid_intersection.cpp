@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "skin/uniform_sample_check.h"
+#include "skin/sampling/uniform_sample_check.h"
 
 namespace hylios::skin {
 namespace {

@@ -15,7 +15,7 @@
 // gradient (x/a², y/a², z/c²) normalised. a = c (a sphere) and large c/a need no special case.
 #pragma once
 #include "skin/spheroid.h"
-#include "skin/vector3.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 

@@ -7,20 +7,20 @@
 #include <cmath>
 #include <string>
 
-#include "skin/cosine_sampling.h"
-#include "skin/exponential_polar_sampling.h"
-#include "skin/henyey_greenstein.h"
-#include "skin/melanosome_orientation_sampling.h"
-#include "skin/random.h"
-#include "skin/rayleigh_sampling.h"
+#include "skin/sampling/cosine_sampling.h"
+#include "skin/sampling/exponential_polar_sampling.h"
+#include "skin/sampling/henyey_greenstein.h"
+#include "skin/sampling/melanosome_orientation_sampling.h"
+#include "skin/core/random.h"
+#include "skin/sampling/rayleigh_sampling.h"
 #include "skin/rough_surface.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
 #include "skin/spheroid_intersection.h"
-#include "skin/surface_normal_sampling.h"
-#include "tests/test_spectra.h"
+#include "skin/sampling/surface_normal_sampling.h"
+#include "tests/support/test_spectra.h"
 
 using namespace hylios::skin;
 

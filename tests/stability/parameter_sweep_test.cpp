@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "skin/random.h"
+#include "skin/core/random.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"

@@ -1,0 +1,52 @@
+#include "app/render_options.h"
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "app/progress_bar.h"
+
+namespace hylios {
+
+std::pair<int, int> parseResolution(const std::string& text) {
+  const auto x = text.find('x');
+  auto number = [&](const std::string& part) {
+    char* end = nullptr;
+    const long v = std::strtol(part.c_str(), &end, 10);
+    if (part.empty() || *end != '\0' || v <= 0 || v > 65536)
+      throw std::invalid_argument("--resolution '" + text + "': expected WxH with positive integers, e.g. 512x512");
+    return static_cast<int>(v);
+  };
+  if (x == std::string::npos) number("");
+  return {number(text.substr(0, x)), number(text.substr(x + 1))};
+}
+
+void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
+  command.add_option("--spp", options.spp, "Samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
+  command.add_option("--resolution", options.resolution, "WxH in pixels (default: the scene's)");
+  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command.add_option("--skin-model", options.skinMode, "walk (exact HyLIoS walk per hit) or table (tabulated fast path); default: the scene's")
+      ->check(CLI::IsMember({"walk", "table"}));
+  command.add_option("--epsilon", options.effectTolerance,
+                     "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped "
+                     "(0 = simulate everything; default: the scene's, else 1e-3)")
+      ->check(CLI::Range(0.0, 1.0));
+  command.add_flag("--explain", options.explain, "Print the effect plan (process, layer, optical depth, kept or skipped)");
+}
+
+RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {
+  RenderSettings settings;
+  if (options.spp > 0) settings.samplesPerPixel = options.spp;
+  if (!options.resolution.empty()) {
+    const auto [w, h] = parseResolution(options.resolution);
+    settings.width = w;
+    settings.height = h;
+  }
+  settings.threads = options.threads;
+  if (!options.skinMode.empty()) settings.skinMode = options.skinMode;
+  if (options.effectTolerance >= 0) settings.effectTolerance = options.effectTolerance;
+  settings.explain = options.explain;
+  settings.progress = progressBarFactory();
+  return settings;
+}
+
+}  // namespace hylios

@@ -1,0 +1,29 @@
+// The options `hylios render` and `hylios figure` share, as given on the command line, and the
+// plain RenderSettings (renderer/tracing/render_job.h) they become.
+#pragma once
+#include <string>
+#include <utility>
+
+#include <CLI/CLI.hpp>
+
+#include "renderer/tracing/render_job.h"
+
+namespace hylios {
+
+/// "WxH" → (W, H); throws std::invalid_argument otherwise.
+std::pair<int, int> parseResolution(const std::string& text);
+
+struct RenderCommandOptions {
+  int spp = 0;                 ///< 0: the scene's
+  std::string resolution;      ///< "": the scene's, else WxH
+  int threads = 0;             ///< 0: all cores
+  std::string skinMode;        ///< "": the scene's
+  double effectTolerance = -1; ///< < 0: the scene's
+  bool explain = false;
+};
+/// Adds --spp, --resolution, --threads, --skin-model, --epsilon and --explain to `command`.
+void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options);
+/// The settings of `options`, with a progress bar on stderr (drawn only on a terminal).
+RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options);
+
+}  // namespace hylios

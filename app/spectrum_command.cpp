@@ -1,0 +1,195 @@
+// hylios spectrum: total hemispherical reflectance of a specimen over wavelengths (paper Figs. 7, 9).
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include "skin/core/atomic_file.h"
+#include "app/commands.h"
+#include "renderer/scene/data_paths.h"
+#include "renderer/tracing/exit_table_cache.h"
+#include "app/gnuplot_plot.h"
+#include "app/measured_spectrum.h"
+#include "app/progress_bar.h"
+#include "renderer/tracing/skin_table_cache.h"
+#include "app/specimen_options.h"
+#include "app/wavelength_list.h"
+#include "skin/effect_plan.h"
+#include "skin/skin_simulation.h"
+
+namespace hylios {
+namespace {
+
+struct SpectrumArguments {
+  SpecimenOptions specimen;
+  double angleDeg = 45;
+  std::string wavelengths = "250:2500:5";
+  std::uint64_t rays = 100000;
+  std::uint64_t seed = 1;
+  std::string out;
+  std::string plot;
+  std::string measured;
+  int threads = 0;
+  double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner; 0: full model
+  bool explain = false;
+  std::string skinModel = "walk";  ///< "table": rays sampled from the cached exit table (skin/exit_table.h)
+};
+
+/// Full plan tables up to this many wavelengths, one summary line each beyond.
+constexpr std::size_t kMaxExplainTables = 8;
+/// Pilot rays of the effect planner per wavelength (skin/effect_plan.h).
+constexpr std::uint64_t kSpectrumPilotRays = 2000;
+
+/// The walk to run at one wavelength: the planned optics and switches, or the full model when
+/// ε = 0 and no plan is to be printed (no pilot then). Also returns the plan when one was made.
+std::optional<skin::EffectPlan> planWavelength(const SpectrumArguments& args, const skin::SkinOptics& optics) {
+  if (args.effectTolerance == 0 && !args.explain) return std::nullopt;
+  skin::PlanOptions options;
+  options.incidenceDeg = {args.angleDeg};
+  options.pilotRays = kSpectrumPilotRays;
+  options.seed = args.seed;
+  return skin::planEffects(optics, args.effectTolerance, options);
+}
+
+void printPlans(const std::vector<std::optional<skin::EffectPlan>>& plans) {
+  for (const auto& plan : plans)
+    if (plan) std::cout << (plans.size() <= kMaxExplainTables ? plan->explain() : plan->summary());
+}
+
+std::string formatCsv(const std::vector<double>& wavelengths, const std::vector<skin::SkinTally>& tallies,
+                      const std::vector<std::optional<skin::EffectPlan>>& plans) {
+  std::ostringstream csv;
+  csv << "wavelength_nm,reflectance,reflectance_stderr,surface_reflectance,subsurface_reflectance,"
+         "transmittance,absorptance,absorptance_stderr,event_limited";
+  for (skin::Layer layer : skin::kAllLayers) csv << ",absorptance_" << skin::layerName(layer);
+  csv << ",effect_bound\n";  // the effect planner's bound on |ΔR| (0: full model)
+  char buffer[64];
+  auto put = [&](double value) {
+    std::snprintf(buffer, sizeof buffer, ",%.6g", value);
+    csv << buffer;
+  };
+  for (std::size_t i = 0; i < wavelengths.size(); ++i) {
+    const skin::SkinTally& t = tallies[i];
+    std::snprintf(buffer, sizeof buffer, "%g", wavelengths[i]);
+    csv << buffer;
+    put(t.reflectance().mean);
+    put(t.reflectance().standardError);
+    put(t.surfaceReflectance().mean);
+    put(t.subsurfaceReflectance().mean);
+    put(t.transmittance().mean);  // 0 for the full stack: the hypodermis junction reflects all
+    put(t.absorptance().mean);
+    put(t.absorptance().standardError);
+    put(t.eventLimited().mean);
+    for (skin::Layer layer : skin::kAllLayers) put(t.absorptance(layer).mean);
+    put(plans[i] ? plans[i]->droppedDepthBound : 0.0);
+    csv << "\n";
+  }
+  return csv.str();
+}
+
+void plotSpectrum(const SpectrumArguments& args, const std::string& specimenName,
+                  const std::vector<double>& wavelengths, const std::vector<skin::SkinTally>& tallies,
+                  const MeasuredSpectrum* measured) {
+  PlotSeries total{"total reflectance ± 1 s.e.", wavelengths, {}, {}, ""};
+  PlotSeries surface{"surface", wavelengths, {}, {}, "lines lw 1 dt 2"};
+  PlotSeries subsurface{"subsurface", wavelengths, {}, {}, "lines lw 1 dt 3"};
+  for (const auto& t : tallies) {
+    total.y.push_back(t.reflectance().mean);
+    total.yError.push_back(t.reflectance().standardError);
+    surface.y.push_back(t.surfaceReflectance().mean);
+    subsurface.y.push_back(t.subsurfaceReflectance().mean);
+  }
+  PlotPanel panel{"", "wavelength (nm)", "reflectance", false, {total, surface, subsurface}};
+  if (measured) panel.series.push_back({"measured: " + measured->label, measured->wavelengthNm, measured->value, {}, "lines lw 2 lc rgb 'black'"});
+  std::ostringstream title;
+  title << "HyLIoS " << specimenName << ", incidence " << args.angleDeg << "°, " << args.rays << " rays per wavelength";
+  plotPanels(args.plot, title.str(), {panel}, 1, 1100, 650);
+}
+
+/// Table mode: `args.rays` rays sampled from the exit table of `walk` (ExitTableCache::shared(), the
+/// renderer's table settings), ray i on Rng(seed, wavelengthStream(λ), i) like the walk.
+skin::SkinTally tableTally(const skin::SkinWalk& walk, const SpectrumArguments& args) {
+  const auto table = ExitTableCache::shared().get(walk, SkinTableCache::renderSettings());
+  const skin::Vec3 incident = skin::incidentDirection(args.angleDeg);
+  const std::uint64_t stream = skin::wavelengthStream(walk.optics().wavelengthNm);
+  skin::SkinTally tally;
+  for (std::uint64_t i = 0; i < args.rays; ++i) {
+    skin::Rng rng(args.seed, stream, i);
+    tally.record(table->sample(incident, rng));
+  }
+  return tally;
+}
+
+void runSpectrum(const SpectrumArguments& args) {
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (args.threads > 0)
+    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
+  const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
+  const auto spectra = skin::SpectralDatabase::load(spectraDir());
+  const std::vector<double> wavelengths = parseWavelengthList(args.wavelengths);
+  std::unique_ptr<MeasuredSpectrum> measured;
+  if (!args.measured.empty()) measured = std::make_unique<MeasuredSpectrum>(loadMeasuredSpectrum(args.measured));
+  std::vector<skin::SkinOptics> optics;  // computed first, so a bad wavelength fails before any walk
+  for (double w : wavelengths) optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
+  skin::WalkRunOptions run;
+  run.incidenceDeg = args.angleDeg;
+  run.rays = args.rays;
+  run.seed = args.seed;
+  std::vector<skin::SkinTally> tallies(wavelengths.size());
+  std::vector<std::optional<skin::EffectPlan>> plans(wavelengths.size());
+  ProgressBar progress("spectrum " + specimen.name, wavelengths.size());
+  tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {
+    plans[i] = planWavelength(args, optics[i]);
+    skin::WalkRunOptions planned = run;
+    if (plans[i]) planned.walk = plans[i]->walk;
+    const skin::SkinOptics& walked = plans[i] ? plans[i]->optics : optics[i];
+    tallies[i] = args.skinModel == "table" ? tableTally(skin::SkinWalk(walked, planned.walk), args)
+                                           : skin::simulateSkin(walked, planned);
+    progress.advance();
+  });
+  progress.finish();
+  if (args.explain) printPlans(plans);
+  writeTextAtomically(args.out, formatCsv(wavelengths, tallies, plans));
+  if (measured) {
+    std::vector<double> model;
+    for (const auto& t : tallies) model.push_back(t.reflectance().mean);
+    std::size_t compared = 0;
+    const double rms = rmsDifference(wavelengths, model, *measured, &compared);
+    std::cout << "RMS difference to '" << measured->label << "': " << rms << " over " << compared << " wavelengths\n";
+  }
+  if (!args.plot.empty()) plotSpectrum(args, specimen.name, wavelengths, tallies, measured.get());
+}
+
+}  // namespace
+
+void registerSpectrumCommand(CLI::App& app) {
+  auto args = std::make_shared<SpectrumArguments>();
+  CLI::App* command = app.add_subcommand("spectrum", "Total hemispherical reflectance of a specimen over wavelengths (CSV, optional plot)");
+  addSpecimenOptions(*command, args->specimen);
+  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")->check(CLI::Range(0.0, 89.999));
+  command->add_option("--wavelengths", args->wavelengths, "start:stop:step or a comma list, nm");
+  command->add_option("--rays", args->rays, "Rays per wavelength")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+  command->add_option("--seed", args->seed, "Random seed (same seed, same output at any thread count)");
+  command->add_option("--out", args->out, "CSV file to write")->required();
+  command->add_option("--plot", args->plot, "PNG plot to write");
+  command->add_option("--measured", args->measured, "FILE:COLUMN of a measured curve to compare with (RMS printed)");
+  command->add_option("--skin-model", args->skinModel,
+                      "walk (exact HyLIoS walk per ray) or table (rays sampled from exit tables cached in "
+                      "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)")
+      ->check(CLI::IsMember({"walk", "table"}));
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->add_option("--epsilon", args->effectTolerance,
+                      "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped, "
+                      "bounding the change of R by it (0 = simulate everything; default 1e-3)")
+      ->check(CLI::Range(0.0, 1.0));
+  command->add_flag("--explain", args->explain,
+                    "Print each wavelength's effect plan (process, layer, optical depth, kept or skipped; "
+                    "one line per wavelength beyond 8)");
+  command->callback([args] { runSpectrum(*args); });
+}
+
+}  // namespace hylios

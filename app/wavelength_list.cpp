@@ -1,0 +1,63 @@
+#include "app/wavelength_list.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace hylios {
+namespace {
+
+[[noreturn]] void fail(const std::string& text, const std::string& why) {
+  throw std::invalid_argument("--wavelengths '" + text + "': " + why);
+}
+
+double parseNumber(const std::string& text, const std::string& token) {
+  if (token.empty()) fail(text, "empty value");
+  char* end = nullptr;
+  const double value = std::strtod(token.c_str(), &end);
+  if (end != token.c_str() + token.size()) fail(text, "'" + token + "' is not a number");
+  if (!std::isfinite(value)) fail(text, "'" + token + "' is not finite");
+  if (value <= 0) fail(text, "'" + token + "' is not a positive wavelength in nm");
+  return value;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  std::string part;
+  while (std::getline(stream, part, separator)) parts.push_back(part);
+  if (!text.empty() && text.back() == separator) parts.emplace_back();
+  return parts;
+}
+
+std::vector<double> parseRange(const std::string& text) {
+  const auto parts = split(text, ':');
+  if (parts.size() != 3) fail(text, "a range is start:stop:step");
+  const double start = parseNumber(text, parts[0]);
+  const double stop = parseNumber(text, parts[1]);
+  const double step = parseNumber(text, parts[2]);
+  if (stop < start) fail(text, "stop is below start");
+  const double count = std::floor((stop - start) / step + 1e-9) + 1;
+  if (count > 1e6) fail(text, "more than a million wavelengths");
+  std::vector<double> wavelengths;
+  for (long i = 0; i < static_cast<long>(count); ++i) {
+    wavelengths.push_back(start + static_cast<double>(i) * step);
+    // A step below the spacing of doubles near start would repeat wavelengths.
+    if (i > 0 && !(wavelengths.back() > wavelengths[wavelengths.size() - 2]))
+      fail(text, "step is too small to separate wavelengths near " + parts[0]);
+  }
+  return wavelengths;
+}
+
+}  // namespace
+
+std::vector<double> parseWavelengthList(const std::string& text) {
+  if (text.empty()) fail(text, "no wavelengths given");
+  if (text.find(':') != std::string::npos) return parseRange(text);
+  std::vector<double> wavelengths;
+  for (const auto& token : split(text, ',')) wavelengths.push_back(parseNumber(text, token));
+  return wavelengths;
+}
+
+}  // namespace hylios

@@ -1,0 +1,342 @@
+#include "renderer/image/film_output.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include "skin/core/atomic_file.h"
+#include "renderer/image/colour_tables.h"
+#include "renderer/image/preview_image.h"
+
+namespace hylios {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Everything derived from the film before any file is written.
+struct FilmImages {
+  int width = 0, height = 0;
+  std::vector<std::string> channelNames;   ///< spectral channels, then R, G, B
+  std::vector<float> pixels;               ///< interleaved, channelNames.size() per pixel
+  std::string rgbDescription;              ///< what R, G, B hold (written as an attribute)
+};
+
+/// Throws if any pixel's channel mean is NaN or infinite, naming the first such pixel.
+void requireFiniteFilm(const Film& film) {
+  for (int y = 0; y < film.height(); ++y) {
+    for (int x = 0; x < film.width(); ++x) {
+      for (std::size_t c = 0; c < film.channels().size(); ++c) {
+        const double v = film.value(x, y, c);
+        if (!std::isfinite(v)) {
+          std::ostringstream message;
+          message << "film has a non-finite value (" << v << ") at pixel (" << x << ", " << y
+                  << "), " << film.channels()[c].wavelengthNm << " nm, band '"
+                  << film.desc().bands[film.channels()[c].band].name << "'; nothing written";
+          throw std::runtime_error(message.str());
+        }
+      }
+    }
+  }
+}
+
+std::vector<std::size_t> channelsOfBand(const Film& film, std::size_t band) {
+  std::vector<std::size_t> indices;
+  for (std::size_t c = 0; c < film.channels().size(); ++c)
+    if (film.channels()[c].band == band) indices.push_back(c);
+  return indices;
+}
+
+/// Linear sRGB of a colour band at a pixel: XYZ = k·Σ L(λ_i)·cmf(λ_i)·Δλ, then the sRGB matrix.
+std::array<double, 3> pixelLinearSrgb(const Film& film, int x, int y,
+                                      const std::vector<std::size_t>& channels, double stepNm,
+                                      double normalisation) {
+  std::array<double, 3> xyz{0, 0, 0};
+  for (const std::size_t c : channels) {
+    const auto cmf = cie1931(film.channels()[c].wavelengthNm);
+    const double radiance = film.value(x, y, c);
+    for (int i = 0; i < 3; ++i) xyz[i] += radiance * cmf[i] * stepNm;
+  }
+  for (double& v : xyz) v *= normalisation;
+  return xyzToLinearSrgb(xyz);
+}
+
+/// The band's radiance at a pixel: the single channel's mean, or the mean over a range's channels.
+double pixelBandMean(const Film& film, int x, int y, const std::vector<std::size_t>& channels) {
+  double sum = 0;
+  for (const std::size_t c : channels) sum += film.value(x, y, c);
+  return sum / static_cast<double>(channels.size());
+}
+
+FilmImages buildImages(const Film& film) {
+  FilmImages images;
+  images.width = film.width();
+  images.height = film.height();
+  for (const auto& channel : film.channels()) images.channelNames.push_back(spectralChannelName(channel.wavelengthNm));
+  images.channelNames.insert(images.channelNames.end(), {"R", "G", "B"});
+  const auto& bands = film.desc().bands;
+  std::size_t rgbBand = 0;
+  bool colour = false;
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    if (isColourBand(bands[b])) {
+      rgbBand = b;
+      colour = true;
+      break;
+    }
+  }
+  const auto rgbChannels = channelsOfBand(film, rgbBand);
+  const double exposure = film.desc().exposure;
+  const double normalisation = colour ? colourBandNormalisation(bands[rgbBand]) : 0.0;
+  images.rgbDescription =
+      colour ? "linear sRGB (CIE 1931 2 deg, D65 white) of band '" + bands[rgbBand].name +
+                   "', Y = 1 for radiance D65/100 (d65 emission of scale 1), times exposure " +
+                   formatLabelNumber(exposure)
+             : "grey: radiance of band '" + bands[rgbBand].name + "' (mean over its channels)";
+  const std::size_t stride = images.channelNames.size();
+  images.pixels.assign(stride * static_cast<std::size_t>(images.width) * images.height, 0.0f);
+  for (int y = 0; y < images.height; ++y) {
+    for (int x = 0; x < images.width; ++x) {
+      float* pixel = &images.pixels[(static_cast<std::size_t>(y) * images.width + x) * stride];
+      for (std::size_t c = 0; c < film.channels().size(); ++c) pixel[c] = static_cast<float>(film.value(x, y, c));
+      std::array<double, 3> rgb{};
+      if (colour) {
+        rgb = pixelLinearSrgb(film, x, y, rgbChannels, bands[rgbBand].stepNm, normalisation);
+        for (double& v : rgb) v *= exposure;
+      } else {
+        rgb.fill(pixelBandMean(film, x, y, rgbChannels));
+      }
+      for (int i = 0; i < 3; ++i) {
+        pixel[film.channels().size() + static_cast<std::size_t>(i)] = static_cast<float>(rgb[i]);
+        if (!std::isfinite(pixel[film.channels().size() + static_cast<std::size_t>(i)]))
+          throw std::runtime_error("RGB preview overflows float at pixel (" + std::to_string(x) +
+                                   ", " + std::to_string(y) + "); nothing written");
+      }
+      for (std::size_t c = 0; c < film.channels().size(); ++c) {
+        if (!std::isfinite(pixel[c]))
+          throw std::runtime_error("film value overflows float at pixel (" + std::to_string(x) +
+                                   ", " + std::to_string(y) + "), channel " +
+                                   images.channelNames[c] + "; nothing written");
+      }
+    }
+  }
+  return images;
+}
+
+void writeExr(const FilmImages& images, const Film& film,
+              const std::vector<std::pair<std::string, std::string>>& extraAttributes, const fs::path& path) {
+  writeAtomically(path, [&](const fs::path& tmp) {
+    // The temporary name has no .exr extension: name the format explicitly.
+    auto out = OIIO::ImageOutput::create("openexr");
+    if (!out) throw std::runtime_error("OpenImageIO has no OpenEXR writer: " + OIIO::geterror());
+    OIIO::ImageSpec spec(images.width, images.height, static_cast<int>(images.channelNames.size()),
+                         OIIO::TypeDesc::FLOAT);
+    spec.channelnames = images.channelNames;
+    spec.attribute("compression", "zip");
+    spec.attribute("spectralLayoutVersion", "1.0");
+    spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
+    spec.attribute("hylios:spp", film.samplesPerPixelDone());
+    spec.attribute("hylios:sppTarget", film.desc().samplesPerPixel);
+    spec.attribute("hylios:exposure", static_cast<float>(film.desc().exposure));
+    spec.attribute("hylios:rgb", images.rgbDescription);
+    for (const auto& [name, value] : extraAttributes) spec.attribute(name, value);
+    if (!out->open(tmp.string(), spec)) {
+      throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
+    }
+    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, images.pixels.data());
+    const bool closed = out->close();
+    if (!written || !closed) {
+      throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
+    }
+  });
+}
+
+/// A band name made safe for a file name: letters, digits, '-', '_' and '.' kept, others '_'.
+std::string fileSafe(const std::string& name) {
+  std::string safe = name.empty() ? std::string("band") : name;
+  for (char& ch : safe) {
+    const bool keep = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+                      ch == '-' || ch == '_' || ch == '.';
+    if (!keep) ch = '_';
+  }
+  return safe;
+}
+
+OIIO::ImageBuf colourPreview(const Film& film, std::size_t band) {
+  const BandDesc& desc = film.desc().bands[band];
+  const auto channels = channelsOfBand(film, band);
+  const double normalisation = colourBandNormalisation(desc);
+  OIIO::ImageBuf image = makeCanvas(film.width(), film.height());
+  for (int y = 0; y < film.height(); ++y) {
+    for (int x = 0; x < film.width(); ++x) {
+      const auto rgb = pixelLinearSrgb(film, x, y, channels, desc.stepNm, normalisation);
+      const float display[3] = {static_cast<float>(srgbEncode(rgb[0] * film.desc().exposure)),
+                                static_cast<float>(srgbEncode(rgb[1] * film.desc().exposure)),
+                                static_cast<float>(srgbEncode(rgb[2] * film.desc().exposure))};
+      image.setpixel(x, y, display, 3);
+    }
+  }
+  return image;
+}
+
+std::string bandCaption(const BandDesc& band) {
+  return band.isRange() ? formatLabelNumber(band.minNm) + "-" + formatLabelNumber(band.maxNm) + " nm"
+                        : formatLabelNumber(band.minNm) + " nm";
+}
+
+}  // namespace
+
+std::string spectralChannelName(double wavelengthNm) {
+  if (!(wavelengthNm > 0) || !std::isfinite(wavelengthNm)) {
+    throw std::invalid_argument("spectral channel wavelength must be positive and finite, got " +
+                                std::to_string(wavelengthNm));
+  }
+  char number[64];
+  std::snprintf(number, sizeof number, "%.6f", wavelengthNm);
+  std::string text = number;
+  std::replace(text.begin(), text.end(), '.', ',');
+  return "S0." + text + "nm";
+}
+
+std::optional<double> parseSpectralChannelName(const std::string& name) {
+  const std::string prefix = "S0.", suffix = "nm";
+  if (name.size() <= prefix.size() + suffix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) {
+    return std::nullopt;
+  }
+  std::string number = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+  if (number.find('.') != std::string::npos) return std::nullopt;
+  std::replace(number.begin(), number.end(), ',', '.');
+  if (number.empty() || !(std::isdigit(static_cast<unsigned char>(number[0])))) return std::nullopt;
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(number, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (used != number.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+bool isColourBand(const BandDesc& band) {
+  return band.isRange() && band.minNm <= 400.0 && band.maxNm >= 700.0;
+}
+
+double colourBandNormalisation(const BandDesc& band) {
+  if (!band.isRange()) throw std::invalid_argument("band '" + band.name + "' is not a range band");
+  double whiteY = 0;
+  for (const double wavelength : band.channelWavelengths()) {
+    const double yBar = cie1931(wavelength)[1];
+    // D65 / 100: the scene's "d65" emission of scale 1 (renderer/scene/emission_spectrum.h).
+    if (yBar > 0) whiteY += d65(wavelength) / 100.0 * yBar * band.stepNm;
+  }
+  if (!(whiteY > 0)) {
+    throw std::invalid_argument("band '" + band.name + "' has no channel where the eye responds");
+  }
+  return 1.0 / whiteY;
+}
+
+std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath,
+                                       const std::vector<std::pair<std::string, std::string>>& extraAttributes) {
+  requireFiniteFilm(film);
+  const FilmImages images = buildImages(film);
+  std::vector<fs::path> written;
+  writeExr(images, film, extraAttributes, exrPath);
+  written.push_back(exrPath);
+
+  const std::string stem = exrPath.stem().string();
+  const auto& bands = film.desc().bands;
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    const fs::path png = exrPath.parent_path() / (stem + "_" + fileSafe(bands[b].name) + ".png");
+    if (isColourBand(bands[b])) {
+      writePngAtomically(colourPreview(film, b), png);
+      written.push_back(png);
+      continue;
+    }
+    const auto channels = channelsOfBand(film, b);
+    std::vector<double> values;
+    values.reserve(static_cast<std::size_t>(film.width()) * film.height());
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) values.push_back(pixelBandMean(film, x, y, channels));
+    const auto panel = pseudoColourPanel(values, film.width(), film.height(), bands[b].previewMin,
+                                         bands[b].previewMax, bandCaption(bands[b]));
+    writePngAtomically(panel.image, png);
+    written.push_back(png);
+    if (!panel.labelled) {
+      // No text rendering here: the colour bar's numbers go to a sidecar file instead.
+      const fs::path sidecar = exrPath.parent_path() / (stem + "_" + fileSafe(bands[b].name) + "_scale.txt");
+      writeTextAtomically(sidecar, "band " + bands[b].name + " (" + bandCaption(bands[b]) +
+                                       "): colour bar from " + formatLabelNumber(bands[b].previewMin) +
+                                       " (left tick) to " + formatLabelNumber(bands[b].previewMax) +
+                                       " (right tick), middle tick " +
+                                       formatLabelNumber(0.5 * (bands[b].previewMin + bands[b].previewMax)) +
+                                       "\n");
+      written.push_back(sidecar);
+    }
+  }
+  return written;
+}
+
+void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<std::string>& labels,
+                       const fs::path& out, int columns) {
+  if (panels.empty()) throw std::invalid_argument("contact sheet '" + out.string() + "': no panels");
+  if (labels.size() != panels.size()) {
+    throw std::invalid_argument("contact sheet '" + out.string() + "': " + std::to_string(panels.size()) +
+                                " panels but " + std::to_string(labels.size()) + " labels");
+  }
+  if (columns <= 0) throw std::invalid_argument("contact sheet '" + out.string() + "': columns must be positive");
+  std::vector<OIIO::ImageBuf> images;
+  int cellWidth = 0, cellHeight = 0;
+  for (const auto& path : panels) {
+    OIIO::ImageBuf image(path.string());
+    if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
+      throw std::runtime_error("contact sheet: cannot read panel '" + path.string() + "': " + image.geterror());
+    }
+    if (image.nchannels() < 3) {
+      const int grey[3] = {0, 0, 0};
+      image = OIIO::ImageBufAlgo::channels(image, 3, grey);
+    } else if (image.nchannels() > 3) {
+      image = OIIO::ImageBufAlgo::channels(image, 3, {});
+    }
+    cellWidth = std::max(cellWidth, image.spec().width);
+    cellHeight = std::max(cellHeight, image.spec().height);
+    images.push_back(std::move(image));
+  }
+  const int fontSize = std::clamp(cellWidth / 16, 12, 28);
+  const int labelHeight = fontSize * 2, padding = std::max(4, fontSize / 2);
+  const int columnCount = std::min<int>(columns, static_cast<int>(panels.size()));
+  const int rowCount = (static_cast<int>(panels.size()) + columnCount - 1) / columnCount;
+  const int pitchX = cellWidth + padding, pitchY = cellHeight + labelHeight + padding;
+  OIIO::ImageBuf sheet = makeCanvas(padding + columnCount * pitchX, padding + rowCount * pitchY);
+  bool labelled = true;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const int column = static_cast<int>(i) % columnCount, row = static_cast<int>(i) / columnCount;
+    const int left = padding + column * pitchX, top = padding + row * pitchY;
+    const int x = left + (cellWidth - images[i].spec().width) / 2;
+    const int y = top + (cellHeight - images[i].spec().height) / 2;
+    if (!OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, images[i])) {
+      throw std::runtime_error("contact sheet: cannot paste '" + panels[i].string() + "': " + sheet.geterror());
+    }
+    labelled = drawText(sheet, left + cellWidth / 2, top + cellHeight + fontSize + fontSize / 3, labels[i],
+                        fontSize, TextAnchor::Centre) && labelled;
+  }
+  writePngAtomically(sheet, out);
+  if (!labelled) {
+    // No text rendering here: the labels go to a sidecar file, in reading order.
+    std::string text;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      text += "row " + std::to_string(i / columnCount + 1) + ", column " +
+              std::to_string(i % columnCount + 1) + ": " + labels[i] + "\n";
+    }
+    fs::path sidecar = out;
+    sidecar.replace_extension(".labels.txt");
+    writeTextAtomically(sidecar, text);
+  }
+}
+
+}  // namespace hylios

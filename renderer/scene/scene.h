@@ -1,0 +1,157 @@
+// A parsed, validated scene: what the scene file (renderer/scene/scene_file.h) says, in plain structs.
+// Every element keeps the file position it came from, so later errors (a missing mesh, a
+// malformed OBJ, a bad texture) still name file:line:col.
+//
+// Units: scene lengths are in scene units; `unitCm` says how many centimetres one unit is (the
+// head mesh is about 5 cm per unit). Wavelengths in nm. Radiance in W·m⁻²·sr⁻¹·nm⁻¹ (relative).
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "skin/effect_plan.h"
+#include "skin/specimen.h"
+
+namespace hylios {
+
+struct FileLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  std::string str() const { return file + ":" + std::to_string(line) + ":" + std::to_string(column); }
+};
+
+/// Any error in a scene or in what it refers to; what() reads "file:line:col: message".
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const FileLocation& where, const std::string& message)
+      : std::runtime_error(where.str() + ": " + message), where_(where) {}
+  const FileLocation& where() const { return where_; }
+
+ private:
+  FileLocation where_;
+};
+
+struct CameraDesc {
+  glm::dvec3 position{0, 0, 5};
+  glm::dvec3 lookAt{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  double verticalFovDeg = 40;
+  double apertureRadius = 0;   ///< thin lens; 0 = pinhole
+  double focusDistance = 0;    ///< 0 = distance to lookAt
+  FileLocation where;
+};
+
+/// One output band: a single wavelength (minNm == maxNm) or a range sampled at stepNm intervals
+/// (one EXR channel per step), e.g. the visible 380–780 nm for the sRGB preview.
+struct BandDesc {
+  std::string name;
+  double minNm = 0;
+  double maxNm = 0;
+  double stepNm = 0;           ///< range bands only
+  /// Fixed pseudo-colour scale for single-wavelength previews (so a series compares).
+  double previewMin = 0;
+  double previewMax = 1;
+  FileLocation where;
+  bool isRange() const { return maxNm > minNm; }
+  /// The channel wavelengths this band writes.
+  std::vector<double> channelWavelengths() const;
+};
+
+struct FilmDesc {
+  int width = 256;
+  int height = 256;
+  int samplesPerPixel = 16;
+  std::vector<BandDesc> bands;
+  double exposure = 1.0;       ///< scale applied before the sRGB transfer of the visible preview
+  FileLocation where;
+};
+
+/// An emission spectrum (relative spectral radiance), evaluated per wavelength.
+struct EmissionDesc {
+  enum class Kind { Constant, D65, Blackbody, Led, Tabulated } kind = Kind::Constant;
+  double scale = 1;            ///< multiplies the shape
+  double temperatureK = 0;     ///< Blackbody (normalised to 1 at its peak)
+  double centreNm = 0;         ///< Led: Gaussian centre
+  double fwhmNm = 0;           ///< Led: full width at half maximum
+  std::vector<double> tableWavelengthNm, tableValue;  ///< Tabulated (file or inline)
+  FileLocation where;
+};
+
+struct LightDesc {
+  enum class Kind { Area, Point, Spot, Environment } kind = Kind::Point;
+  EmissionDesc emission;
+  glm::dvec3 position{0};
+  glm::dvec3 direction{0, 0, -1};  ///< Spot: axis
+  double spotInnerDeg = 0;
+  double spotOuterDeg = 0;
+  std::string shape;               ///< Area: name of the emitting shape
+  FileLocation where;
+};
+
+/// Skin: a specimen plus overrides, and spatially varying inputs.
+struct SkinMaterialDesc {
+  std::string specimen = "S1";
+  std::vector<skin::SpecimenOverride> overrides;
+  std::filesystem::path melaninMap;    ///< optional greyscale texture in UV space: multiplier of melanin
+  double melaninMapMin = 1;            ///< multiplier where the map is black
+  double melaninMapMax = 1;            ///< multiplier where the map is white
+  struct Freckles {
+    double densityPerCm2 = 0;          ///< 0 = none
+    double radiusCm = 0.15;
+    double melaninGain = 3;            ///< melanin multiplier at a freckle's centre
+    std::uint64_t seed = 1;
+  } freckles;
+  double waterReduction = 0;           ///< extra fraction in [0, 1], on top of the specimen's
+};
+
+struct MaterialDesc {
+  enum class Kind { Skin, Diffuse, Dielectric } kind = Kind::Diffuse;
+  std::string name;
+  SkinMaterialDesc skin;
+  EmissionDesc reflectance;            ///< Diffuse: reflectance spectrum in [0, 1]
+  double refractiveIndex = 1.5;        ///< Dielectric
+  double roughness = 0;                ///< Dielectric: 0 = smooth
+  FileLocation where;
+};
+
+struct ShapeDesc {
+  enum class Kind { Mesh, Sphere, Plane } kind = Kind::Sphere;
+  std::string name;
+  std::filesystem::path meshPath;      ///< Mesh: OBJ, resolved against the scene file's folder
+  glm::dmat4 transform{1.0};           ///< object to world (translate · rotate · scale)
+  bool smoothNormals = true;
+  glm::dvec3 centre{0};                ///< Sphere
+  double radius = 1;                   ///< Sphere
+  glm::dvec3 planePoint{0};            ///< Plane (a square of side planeSize)
+  glm::dvec3 planeNormal{0, 1, 0};
+  double planeSize = 10;
+  std::string material;                ///< name of a MaterialDesc
+  FileLocation where;
+};
+
+struct IntegratorDesc {
+  int maxDepth = 8;
+  std::uint64_t seed = 1;
+  std::string skinMode = "walk";       ///< "walk" (exact HyLIoS walk at every hit) or "table" (issue 5)
+  double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner (skin/effect_plan.h)
+  FileLocation where;
+};
+
+struct SceneDesc {
+  std::filesystem::path file;          ///< the scene file (relative paths resolve against its folder)
+  double unitCm = 1;                   ///< centimetres per scene unit
+  CameraDesc camera;
+  FilmDesc film;
+  std::vector<LightDesc> lights;
+  std::vector<MaterialDesc> materials;
+  std::vector<ShapeDesc> shapes;
+  IntegratorDesc integrator;
+};
+
+}  // namespace hylios

@@ -1,0 +1,342 @@
+#include "renderer/tracing/integrator.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <sstream>
+
+#include "renderer/scene/data_paths.h"
+#include "renderer/scene/emission_spectrum.h"
+#include "skin/sampling/cosine_sampling.h"
+#include "skin/fresnel.h"
+#include "skin/core/vector3.h"
+
+namespace hylios {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kTileSize = 16;
+
+double powerHeuristic(double pdfA, double pdfB) {
+  const double a = pdfA * pdfA, b = pdfB * pdfB;
+  return a + b > 0 ? a / (a + b) : 0.0;
+}
+
+glm::dvec3 toGlm(const skin::Vec3& v) { return {v.x, v.y, v.z}; }
+
+/// A cosine-distributed direction about unit `normal`.
+glm::dvec3 sampleCosine(const glm::dvec3& normal, skin::Rng& rng) {
+  const double u1 = rng.uniform(), u2 = rng.uniform();
+  const skin::Frame frame({normal.x, normal.y, normal.z});
+  return glm::normalize(toGlm(frame.toWorld(skin::sampleCosineHemisphere(u1, u2))));
+}
+
+}  // namespace
+
+void RenderStats::add(const RenderStats& o) {
+  paths += o.paths;
+  skinWalks += o.skinWalks;
+  skinAbsorbed += o.skinAbsorbed;
+  skinSurfaceExits += o.skinSurfaceExits;
+  skinSubsurfaceExits += o.skinSubsurfaceExits;
+  skinEventLimited += o.skinEventLimited;
+  exitFallbacks += o.exitFallbacks;
+  belowSurface += o.belowSurface;
+}
+
+Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channelWavelengths)
+    : scene_(scene), wavelengths_(channelWavelengths) {
+  if (scene.integrator.maxDepth < 0) throw SceneError(scene.integrator.where, "max_depth must be >= 0");
+  if (!(scene.unitCm > 0) || !std::isfinite(scene.unitCm)) throw SceneError({scene.file.string(), 0, 0}, "unit_cm must be > 0");
+  camera_ = std::make_unique<Camera>(scene.camera, scene.film.width, scene.film.height);
+  geometry_ = std::make_unique<EmbreeScene>(scene);
+  rayOffset_ = 1e-5 * std::max(1.0, geometry_->sceneExtent());
+  lights_ = std::make_unique<LightSet>(scene, *geometry_, channelWavelengths);
+  bool anySkin = false;
+  for (const auto& m : scene.materials) anySkin = anySkin || m.kind == MaterialDesc::Kind::Skin;
+  std::unique_ptr<skin::SpectralDatabase> spectra;
+  if (anySkin) spectra = std::make_unique<skin::SpectralDatabase>(skin::SpectralDatabase::load(spectraDir()));
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const MaterialDesc& desc = scene.materials[i];
+    Material m;
+    m.kind = desc.kind;
+    switch (desc.kind) {
+      case MaterialDesc::Kind::Diffuse:
+        for (double w : channelWavelengths) {
+          const double rho = evaluateEmission(desc.reflectance, w);
+          if (!(rho >= 0 && rho <= 1))
+            throw SceneError(desc.reflectance.where, "diffuse reflectance must lie in [0, 1]; it is " +
+                                                         std::to_string(rho) + " at " + std::to_string(w) + " nm");
+          m.reflectance.push_back(rho);
+        }
+        break;
+      case MaterialDesc::Kind::Dielectric:
+        if (desc.roughness != 0)
+          throw SceneError(desc.where, "only smooth dielectrics (roughness = 0) are implemented");
+        if (!(desc.refractiveIndex > 0) || !std::isfinite(desc.refractiveIndex))
+          throw SceneError(desc.where, "refractive index must be a positive number");
+        m.refractiveIndex = desc.refractiveIndex;
+        break;
+      case MaterialDesc::Kind::Skin: {
+        bool used = false;
+        for (const auto& s : scene.shapes) used = used || s.material == desc.name;
+        if (!used) break;  // only the skin that the scene shows is prepared
+        const skin::Specimen specimen = loadMaterialSpecimen(desc, specimenDir());
+        m.skin = std::make_unique<SkinMaterial>(desc, specimen, i, scene.unitCm, channelWavelengths, *spectra,
+                                                scene.integrator.skinMode, scene.integrator.effectTolerance);
+        break;
+      }
+    }
+    materials_.push_back(std::move(m));
+  }
+  for (const ShapeDesc& shape : scene.shapes) {
+    std::size_t index = scene.materials.size();
+    for (std::size_t i = 0; i < scene.materials.size(); ++i)
+      if (scene.materials[i].name == shape.material) index = i;
+    if (index == scene.materials.size()) throw SceneError(shape.where, "unknown material '" + shape.material + "'");
+    materialOfShape_.push_back(index);
+  }
+}
+
+Integrator::~Integrator() = default;
+
+std::string Integrator::effectPlanReport() const {
+  std::string text;
+  for (std::size_t i = 0; i < materials_.size(); ++i)
+    if (materials_[i].skin)
+      text += "effect plans of skin material '" + scene_.materials[i].name + "':\n" +
+              materials_[i].skin->walks().explainEffectPlans();
+  return text;
+}
+
+std::size_t Integrator::skippedDegenerateTriangles(std::string* report) const {
+  std::size_t total = 0;
+  std::ostringstream text;
+  for (std::size_t i = 0; i < geometry_->shapeCount(); ++i) {
+    const std::size_t n = geometry_->skippedDegenerate(i);
+    total += n;
+    if (n > 0)
+      text << scene_.shapes[i].where.str() << ": mesh '" << scene_.shapes[i].meshPath.string() << "': skipped " << n
+           << " degenerate triangle" << (n == 1 ? "" : "s") << "\n";
+  }
+  if (report) *report = text.str();
+  return total;
+}
+
+Ray Integrator::spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction,
+                      double tMax) const {
+  const double scale = rayOffset_ * std::max({1.0, std::fabs(point.x), std::fabs(point.y), std::fabs(point.z)});
+  return {point + sideNormal * (glm::dot(direction, sideNormal) >= 0 ? scale : -scale), direction, tMax};
+}
+
+template <typename Lobe>
+double Integrator::directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal, std::size_t channel,
+                               skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const {
+  const double uSelect = rng.uniform(), u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+  const std::optional<LightSample> light = lights_->sample(point, channel, uSelect, u0, u1, u2);
+  if (!light || (deltaOnly && !light->isDelta)) return 0;
+  if (!(glm::dot(light->direction, geometricNormal) > 0)) return 0;
+  const double f = lobe(light->direction);
+  if (!(f > 0)) return 0;
+  const Ray shadow = spawn(point, geometricNormal, light->direction, light->distance);
+  if (!lights_->visible(shadow.origin, *light, glm::length(shadow.origin - point))) return 0;
+  const double weight = light->isDelta ? 1.0 : powerHeuristic(light->pdf, f);
+  return f * light->value * weight / light->pdf;
+}
+
+double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng& rng, RenderStats& stats) const {
+  ++stats.paths;
+  const int maxDepth = scene_.integrator.maxDepth;
+  Ray ray = cameraRay;
+  double L = 0, beta = 1;
+  bool lastSpecular = true;  // camera, dielectric or skin surface reflection: emitters count fully
+  double lastPdf = 0;        // density (sr⁻¹) of the continued direction, for MIS at emitters
+  glm::dvec3 lastPoint = ray.origin;
+  for (int depth = 0;; ++depth) {
+    const std::optional<SurfaceHit> hit = geometry_->intersect(ray);
+    if (!hit) {
+      if (lights_->hasEnvironment())
+        L += beta * lights_->environmentRadiance(channel) *
+             (lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->environmentPdf()));
+      break;
+    }
+    if (lights_->isEmitter(hit->shape)) {
+      const double emitted = lights_->emittedRadiance(*hit, -ray.direction, channel);
+      if (emitted > 0)
+        L += beta * emitted * (lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->emitterPdf(lastPoint, *hit)));
+    }
+    if (depth >= maxDepth) break;
+    const Material& material = materials_[materialOfShape_[hit->shape]];
+    // Normals on the side the ray arrives from.
+    glm::dvec3 ng = hit->geometricNormal, ns = hit->shadingNormal;
+    const bool backFace = glm::dot(ray.direction, ng) > 0;
+    if (material.kind == MaterialDesc::Kind::Dielectric) {
+      const double cosIn = std::fabs(glm::dot(ray.direction, ng));
+      const double nFrom = backFace ? material.refractiveIndex : 1.0, nTo = backFace ? 1.0 : material.refractiveIndex;
+      const glm::dvec3 facing = backFace ? -ng : ng;
+      const skin::FresnelResult fr = skin::fresnel(cosIn, nFrom, nTo);
+      glm::dvec3 direction;
+      if (rng.uniform() < fr.reflectance) {
+        direction = ray.direction + facing * (2 * cosIn);
+      } else {
+        const skin::Vec3 d = skin::refractDirection({ray.direction.x, ray.direction.y, ray.direction.z},
+                                                    {facing.x, facing.y, facing.z}, nFrom, nTo, fr.cosTransmitted);
+        direction = toGlm(d);
+        beta *= (nFrom / nTo) * (nFrom / nTo);
+      }
+      direction = glm::normalize(direction);
+      ray = spawn(hit->position, facing, direction, std::numeric_limits<double>::infinity());
+      lastSpecular = true;
+      continue;
+    }
+    if (backFace) {
+      ng = -ng;
+      ns = -ns;
+    }
+    if (!(glm::dot(ray.direction, ns) < 0)) ns = ng;
+    glm::dvec3 point = hit->position;
+    if (material.kind == MaterialDesc::Kind::Skin) {
+      ++stats.skinWalks;
+      const SkinScatter s = material.skin->scatter(*hit, ray.direction, channel, *geometry_, materialOfShape_, rng);
+      if (s.kind == SkinScatter::Kind::Absorbed) {
+        ++stats.skinAbsorbed;
+        break;
+      }
+      if (s.kind == SkinScatter::Kind::EventLimit) {
+        ++stats.skinEventLimited;
+        break;
+      }
+      if (s.kind == SkinScatter::Kind::SurfaceReflection) {
+        ++stats.skinSurfaceExits;
+        const glm::dvec3 incident = ray.direction, normal = s.shadingNormal;
+        L += beta * directLight(s.point, s.geometricNormal, channel, rng, true, [&](const glm::dvec3& w) {
+               return material.skin->surfaceLobeDensity(incident, normal, w);
+             });
+        if (!(glm::dot(s.direction, s.geometricNormal) > 0)) {
+          ++stats.belowSurface;
+          break;
+        }
+        ray = spawn(s.point, s.geometricNormal, s.direction, std::numeric_limits<double>::infinity());
+        lastSpecular = true;
+        lastPoint = s.point;
+        continue;
+      }
+      ++stats.skinSubsurfaceExits;
+      if (s.exitFallback) ++stats.exitFallbacks;
+      point = s.point;
+      ng = s.geometricNormal;
+      ns = s.shadingNormal;
+      // The Lambertian exit lobe (albedo 1: the walk already decided that the light left).
+      const auto lobe = [&](const glm::dvec3& w) { return std::max(0.0, glm::dot(w, ns)) / kPi; };
+      L += beta * directLight(point, ng, channel, rng, false, lobe);
+    } else {  // diffuse
+      const double rho = material.reflectance[channel];
+      const auto lobe = [&](const glm::dvec3& w) { return std::max(0.0, glm::dot(w, ns)) / kPi; };
+      L += beta * rho * directLight(point, ng, channel, rng, false, lobe);
+      beta *= rho;
+      if (!(beta > 0)) break;
+    }
+    const glm::dvec3 direction = sampleCosine(ns, rng);
+    if (!(glm::dot(direction, ng) > 0)) {
+      ++stats.belowSurface;
+      break;
+    }
+    lastPdf = glm::dot(direction, ns) / kPi;
+    lastSpecular = false;
+    lastPoint = point;
+    ray = spawn(point, ng, direction, std::numeric_limits<double>::infinity());
+  }
+  return L;
+}
+
+RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
+  if (film.channels().size() != wavelengths_.size())
+    throw std::invalid_argument("Integrator::render: the film's channels differ from the integrator's");
+  for (std::size_t c = 0; c < wavelengths_.size(); ++c)
+    if (film.channels()[c].wavelengthNm != wavelengths_[c])
+      throw std::invalid_argument("Integrator::render: the film's channels differ from the integrator's");
+  if (film.width() != scene_.film.width || film.height() != scene_.film.height)
+    throw std::invalid_argument("Integrator::render: the film's resolution differs from the scene's");
+  const int spp = film.desc().samplesPerPixel;
+  int done = film.samplesPerPixelDone();
+  if (done < 0 || done > spp)
+    throw std::invalid_argument("Integrator::render: the film has " + std::to_string(done) +
+                                " samples per pixel, the target is " + std::to_string(spp));
+  if (options.samplesPerPass < 0) throw std::invalid_argument("Integrator::render: samplesPerPass must be >= 0");
+  const std::uint64_t tiles = static_cast<std::uint64_t>((film.width() + kTileSize - 1) / kTileSize) *
+                              static_cast<std::uint64_t>((film.height() + kTileSize - 1) / kTileSize);
+  std::unique_ptr<RenderProgress> progress;
+  if (options.progress && done < spp)
+    progress = options.progress(options.label, tiles * static_cast<std::uint64_t>(spp - done));
+  RenderStats total;
+  int passSamples = options.samplesPerPass > 0 ? options.samplesPerPass : 1;
+  while (done < spp) {
+    if (options.stopRequested && options.stopRequested()) break;
+    const int end = spp - done > passSamples ? done + passSamples : spp;
+    const auto start = std::chrono::steady_clock::now();
+    renderPass(film, done, end, total, progress.get());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    done = end;
+    film.setSamplesPerPixelDone(done);
+    if (options.onPassDone) options.onPassDone(done, seconds);
+    if (options.samplesPerPass == 0 && seconds < kAdaptivePassSeconds && passSamples < (1 << 24)) {
+      // Aim the next pass at kAdaptivePassSeconds, growing at most 8-fold (the first passes warm up).
+      const double factor = std::min(8.0, std::round(kAdaptivePassSeconds / std::max(seconds, 1e-9)));
+      passSamples *= std::max(1, static_cast<int>(factor));
+    }
+  }
+  if (progress) {
+    if (done == spp)
+      progress->finish();
+    else
+      progress->stop();
+  }
+  return total;
+}
+
+void Integrator::renderPass(Film& film, int firstSample, int endSample, RenderStats& total,
+                            RenderProgress* progress) const {
+  const int width = film.width(), height = film.height();
+  const int spp = film.desc().samplesPerPixel;
+  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+  const std::size_t tiles = static_cast<std::size_t>(tilesX) * static_cast<std::size_t>(tilesY);
+  std::mutex totalMutex;
+  const std::uint64_t seed = scene_.integrator.seed;
+  constexpr std::uint64_t kChannelRotationStream = ~std::uint64_t{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles, 1), [&](const tbb::blocked_range<std::size_t>& range) {
+    RenderStats stats;
+    for (std::size_t tile = range.begin(); tile != range.end(); ++tile) {
+      const int x0 = static_cast<int>(tile % static_cast<std::size_t>(tilesX)) * kTileSize;
+      const int y0 = static_cast<int>(tile / static_cast<std::size_t>(tilesX)) * kTileSize;
+      for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+        for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+          const std::uint64_t pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) +
+                                      static_cast<std::uint64_t>(x);
+          // Channels are stratified over the pixel's samples (sample s takes the s-th of spp equal
+          // slices of [0, 1), jittered; spp is the target, not the pass), with a per-pixel rotation
+          // (Cranley–Patterson) drawn from its own stream: with spp ≥ the number of channels every
+          // channel of the pixel gets a sample, and no channel is skipped in the same way for every pixel.
+          const double rotation = skin::Rng(seed, pixel, kChannelRotationStream).uniform();
+          for (int s = firstSample; s < endSample; ++s) {
+            skin::Rng rng(seed, pixel, static_cast<std::uint64_t>(s));
+            double u = (static_cast<double>(s) + rng.uniform()) / static_cast<double>(spp) + rotation;
+            u -= std::floor(u);
+            const std::size_t channel = film.sampleChannel(u < 1.0 ? u : skin::kOneMinusEpsilon);
+            const double px = x + rng.uniform(), py = y + rng.uniform();
+            const double lu = rng.uniform(), lv = rng.uniform();
+            film.addSample(x, y, channel, radiance(camera_->generateRay(px, py, lu, lv), channel, rng, stats));
+          }
+        }
+      if (progress) progress->advance(static_cast<std::uint64_t>(endSample - firstSample));
+    }
+    std::lock_guard<std::mutex> lock(totalMutex);
+    total.add(stats);
+  });
+}
+
+}  // namespace hylios

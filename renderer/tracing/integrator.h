@@ -1,0 +1,127 @@
+// The spectral path tracer: one wavelength per camera path (a film channel drawn by
+// Film::sampleChannel), next-event estimation with multiple importance sampling (power heuristic,
+// β = 2) for area and environment lights, delta point/spot lights by next-event estimation only.
+//
+// Materials (MaterialDesc):
+//   diffuse    — Lambertian, reflectance spectrum ρ(λ) in [0, 1]; cosine-sampled continuation;
+//                two-sided.
+//   dielectric — smooth interface of index n (air outside): Fresnel reflection or refraction chosen
+//                in proportion; refraction scales radiance by (n_i/n_t)² (pbrt's radiance mode).
+//   skin       — the HyLIoS walk (renderer/tracing/skin_material.h, where the estimator is documented).
+// max_depth counts scattering vertices (a skin walk is one): max_depth = 1 is direct lighting.
+// No Russian roulette: paths end at max_depth, by absorption, or by leaving the scene.
+//
+// Determinism: sample s of pixel p (p = y·width + x) draws every number from
+// skin::Rng(seed, p, s), and the pixels are split into 16×16 tiles, each written by one task; the
+// image is identical for any thread count (tbb::global_control chooses it).
+#pragma once
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/tracing/camera.h"
+#include "renderer/tracing/embree_scene.h"
+#include "renderer/image/film.h"
+#include "renderer/tracing/lights.h"
+#include "renderer/tracing/render_progress.h"
+#include "renderer/scene/scene.h"
+#include "renderer/tracing/skin_material.h"
+#include "skin/core/random.h"
+
+namespace hylios {
+
+/// Counters of a render (sums over all paths; order-independent, so deterministic).
+struct RenderStats {
+  std::uint64_t paths = 0;
+  std::uint64_t skinWalks = 0;
+  std::uint64_t skinAbsorbed = 0;
+  std::uint64_t skinSurfaceExits = 0;
+  std::uint64_t skinSubsurfaceExits = 0;
+  std::uint64_t skinEventLimited = 0;       ///< walks stopped at SkinWalk::kMaxEvents (path ended)
+  std::uint64_t exitFallbacks = 0;          ///< subsurface exits not projected onto the surface
+  std::uint64_t belowSurface = 0;           ///< continuations below the geometric surface (path ended)
+  void add(const RenderStats& o);
+};
+
+/// Sample passes: render() adds samples to every pixel pass by pass (samples [a, b) of every
+/// pixel, then [b, c), ...), so it can stop between passes with the same number of samples in
+/// every pixel; a pixel's samples are always added in the order 0, 1, 2, ..., so the film's sums
+/// are bit-identical however the samples are split into passes (and whether a render was stopped
+/// and continued).
+struct RenderOptions {
+  RenderProgressFactory progress;  ///< empty: no progress display
+  std::string label = "render";
+  /// Samples per pixel per pass; 0: adaptive — 1 at first, then after every pass shorter than
+  /// kAdaptivePassSeconds multiplied by round(kAdaptivePassSeconds / its duration), at most 8-fold,
+  /// so passes settle near kAdaptivePassSeconds (the latency of a stop request).
+  int samplesPerPass = 0;
+  /// Asked before each pass; true stops the render (film.samplesPerPixelDone() tells how far it got).
+  std::function<bool()> stopRequested;
+  /// Called after each completed pass with the samples per pixel done and the pass's duration.
+  std::function<void(int samplesDone, double passSeconds)> onPassDone;
+};
+constexpr double kAdaptivePassSeconds = 2.0;
+
+/// Options for a render without a progress bar (tests, batch use).
+inline RenderOptions quietRenderOptions(std::string label) {
+  RenderOptions options;
+  options.label = std::move(label);
+  return options;
+}
+
+class Integrator {
+ public:
+  /// Prepares geometry, lights, materials and the skin walks for the given channel wavelengths.
+  /// Throws SceneError for anything wrong in the scene or the files it refers to.
+  Integrator(const SceneDesc& scene, const std::vector<double>& channelWavelengths);
+  ~Integrator();
+
+  /// Renders samples film.samplesPerPixelDone() .. film.desc().samplesPerPixel − 1 of every pixel
+  /// into `film` (whose channels must be the wavelengths given to the constructor), in passes, and
+  /// updates film.samplesPerPixelDone() after each; returns the counters of the samples it drew.
+  /// A film continued from a saved state gets exactly the sums of an uninterrupted render.
+  RenderStats render(Film& film, const RenderOptions& options = {}) const;
+
+  /// Radiance along `ray` at channel `channel` (one path).
+  double radiance(const Ray& ray, std::size_t channel, skin::Rng& rng, RenderStats& stats) const;
+
+  const Camera& camera() const { return *camera_; }
+  const EmbreeScene& geometry() const { return *geometry_; }
+  const LightSet& lights() const { return *lights_; }
+  /// Degenerate triangles skipped over all meshes, with a line per mesh in `report`.
+  std::size_t skippedDegenerateTriangles(std::string* report = nullptr) const;
+  /// The skin materials' effect plans (skin_walk_cache.h), for --explain.
+  std::string effectPlanReport() const;
+
+ private:
+  struct Material {
+    MaterialDesc::Kind kind;
+    std::vector<double> reflectance;       ///< diffuse, per channel
+    double refractiveIndex = 1.5;          ///< dielectric
+    std::unique_ptr<SkinMaterial> skin;
+  };
+  /// Next-event estimate at `point` for a lobe density `lobe(ω)` (per sr, cos included);
+  /// deltaOnly: only point/spot lights.
+  template <typename Lobe>
+  double directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal, std::size_t channel,
+                     skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const;
+  /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
+  void renderPass(Film& film, int firstSample, int endSample, RenderStats& total, RenderProgress* progress) const;
+  Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction, double tMax) const;
+
+  SceneDesc scene_;
+  std::vector<double> wavelengths_;
+  std::unique_ptr<EmbreeScene> geometry_;
+  std::unique_ptr<LightSet> lights_;
+  std::unique_ptr<Camera> camera_;
+  std::vector<Material> materials_;
+  std::vector<std::size_t> materialOfShape_;
+  double rayOffset_ = 1e-5;
+};
+
+}  // namespace hylios

@@ -1,0 +1,89 @@
+// The scene's lights at the film's wavelengths: point, spot, area (an emitting shape) and one
+// environment (uniform radiance from every direction). Emission spectra come from EmissionDesc
+// (renderer/scene/emission_spectrum.h) and are tabulated once per film channel.
+//
+// | light       | emits                                                                         |
+// |-------------|-------------------------------------------------------------------------------|
+// | point       | intensity I(λ) (relative W·sr⁻¹·nm⁻¹) equally in all directions               |
+// | spot        | I(λ) inside inner_angle, 0 outside outer_angle, smoothstep in cosθ between     |
+// | area        | radiance L(λ) from the front side of its shape only (the geometric normal:     |
+// |             | winding for meshes and planes, outward for spheres)                            |
+// | environment | radiance L(λ) arriving from every direction (at infinity)                     |
+//
+// Next-event estimation picks one light uniformly (probability 1/count), then a point on it:
+// area lights uniformly in area (pdf converted to solid angle, d²/|cosθ_light|), the environment
+// uniformly over the sphere of directions (1/4π sr⁻¹). Point and spot lights are delta lights:
+// only next-event estimation reaches them.
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/tracing/embree_scene.h"
+#include "renderer/scene/scene.h"
+
+namespace hylios {
+
+/// A light sample as seen from a shading point.
+struct LightSample {
+  glm::dvec3 direction;     ///< unit, from the shading point towards the light
+  double distance = 0;      ///< to the sampled point; infinite for the environment
+  /// Area/environment: radiance arriving along -direction. Delta lights: irradiance on a surface
+  /// facing the light, I/d² (so contribution = lobe density × value / pdf in both cases).
+  double value = 0;
+  double pdf = 0;           ///< selection × solid-angle density (delta lights: selection only)
+  bool isDelta = false;
+  /// Area lights: the emitting shape, and whether it is convex or flat (a sphere or a plane), so
+  /// that nothing of it can hide the sampled point (a mesh may shadow itself).
+  int shape = -1;
+  bool convexShape = false;
+};
+
+class LightSet {
+ public:
+  LightSet(const SceneDesc& scene, const EmbreeScene& geometry, const std::vector<double>& channelWavelengths);
+  /// Whether nothing blocks the light sample as seen from `origin` (an offset shading point).
+  /// Area lights: the first surface along the ray must be the light's own shape, at the sampled
+  /// point (meshes) or anywhere (convex/flat shapes: a float ray grazing a sphere's silhouette
+  /// may meet it slightly early, which must not count as a shadow).
+  bool visible(const glm::dvec3& origin, const LightSample& sample, double offset) const;
+
+  std::size_t count() const { return lights_.size(); }
+  /// One light sample for a shading point; nullopt when the chosen light sends nothing there.
+  std::optional<LightSample> sample(const glm::dvec3& point, std::size_t channel, double uSelect, double u0,
+                                    double u1, double u2) const;
+
+  bool hasEnvironment() const { return environment_ >= 0; }
+  double environmentRadiance(std::size_t channel) const;
+  /// Selection × solid-angle density with which sample() yields a given environment direction.
+  double environmentPdf() const;
+
+  /// Whether a shape emits, and its radiance towards `towardViewer` (unit, from the surface to the
+  /// viewer) at a hit: 0 from the back side.
+  bool isEmitter(std::size_t shape) const { return shape < lightOfShape_.size() && lightOfShape_[shape] >= 0; }
+  double emittedRadiance(const SurfaceHit& hit, const glm::dvec3& towardViewer, std::size_t channel) const;
+  /// Selection × solid-angle density with which sample() from `from` yields the point `hit` on an
+  /// emitting shape.
+  double emitterPdf(const glm::dvec3& from, const SurfaceHit& hit) const;
+
+ private:
+  struct Light {
+    LightDesc::Kind kind;
+    glm::dvec3 position{0};
+    glm::dvec3 axis{0, 0, -1};
+    double cosInner = 1, cosOuter = 1;
+    std::size_t shape = 0;
+    std::vector<double> emission;  ///< per channel
+  };
+  double spotFalloff(const Light& light, const glm::dvec3& towardPoint) const;
+
+  const EmbreeScene& geometry_;
+  std::vector<Light> lights_;
+  std::vector<int> lightOfShape_;
+  std::vector<bool> convexShape_;
+  int environment_ = -1;
+};
+
+}  // namespace hylios

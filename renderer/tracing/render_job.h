@@ -1,0 +1,51 @@
+// Rendering one scene file (what `hylios render` and `hylios figure` run): load and validate the
+// scene, apply the overrides of a plain RenderSettings (app/render_options.h fills it from the
+// command line), prepare the integrator, render with the requested thread count, and report
+// timing and counters.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "renderer/image/film.h"
+#include "renderer/tracing/integrator.h"
+#include "renderer/image/render_checkpoint.h"
+#include "renderer/scene/scene.h"
+
+namespace hylios {
+
+struct RenderSettings {
+  std::optional<int> samplesPerPixel;
+  std::optional<int> width, height;
+  std::optional<std::uint64_t> seed;
+  int threads = 0;          ///< 0: all cores
+  RenderProgressFactory progress;  ///< empty: no progress display
+  std::optional<std::string> skinMode;     ///< "walk" or "table" (the scene's when unset)
+  std::optional<double> effectTolerance;   ///< ε of the effect planner (the scene's when unset)
+  bool explain = false;                    ///< print the effect plans before rendering
+  /// Interruptible renders (render --resume): asked between sample passes, true stops the render.
+  std::function<bool()> stopRequested;
+  /// A checkpoint's state to continue (readMatchingCheckpoint has checked it against the scene).
+  std::shared_ptr<const RenderCheckpoint> resumeFrom;
+};
+
+struct RenderResult {
+  std::unique_ptr<Film> film;
+  RenderStats stats;
+  double prepareSeconds = 0;  ///< scene loading, BVH build, skin-walk precomputation
+  double renderSeconds = 0;
+  int samplesPerPixelAtStart = 0;  ///< > 0 when continued from a checkpoint
+  bool stopped = false;            ///< stopped by stopRequested before the spp target
+};
+
+/// The scene with the settings applied (spp, resolution, seed).
+SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings);
+
+/// Renders `scene` (after applyRenderSettings); writes a short report to `log` (may be null).
+RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings, std::ostream* log);
+
+}  // namespace hylios

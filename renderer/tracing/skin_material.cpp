@@ -1,0 +1,183 @@
+#include "renderer/tracing/skin_material.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "skin/sampling/surface_normal_sampling.h"
+#include "skin/core/vector3.h"
+
+namespace hylios {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kLobeTableSize = 65;
+constexpr int kLobeTableStrata = 96;  // stratified facet normals per table entry (per dimension)
+
+skin::Vec3 toSkin(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 toGlm(const skin::Vec3& v) { return {v.x, v.y, v.z}; }
+
+/// Facet-normal density per steradian about the macro normal: P_s(θ)/(2π sinθ).
+double facetDensityPerSr(double s, double cosTheta) {
+  const double theta = std::acos(std::clamp(cosTheta, -1.0, 1.0));
+  const double t = std::max(theta, 1e-7);  // P_s ∝ sinθ near 0: the ratio is finite there
+  return skin::surfaceNormalPolarDensity(s, t) / (2 * kPi * std::sin(t));
+}
+
+/// N(cosθ_i): probability that a facet drawn from P_s faces the ray and mirrors it out of the
+/// surface. Local frame: the ray travels along +z into the surface, the macro normal is −z.
+double facetReflectionLeaves(double s, double cosIncident) {
+  const double sinIncident = std::sqrt(std::max(0.0, 1 - cosIncident * cosIncident));
+  const skin::Vec3 d{sinIncident, 0, cosIncident};
+  int leaving = 0;
+  for (int i = 0; i < kLobeTableStrata; ++i)
+    for (int j = 0; j < kLobeTableStrata; ++j) {
+      const double theta = skin::sampleSurfaceNormalPolar(s, (i + 0.5) / kLobeTableStrata);
+      const double phi = 2 * kPi * (j + 0.5) / kLobeTableStrata;
+      const skin::Vec3 m{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), -std::cos(theta)};
+      const double dm = skin::dot(d, m);
+      if (!(dm < 0)) continue;
+      const skin::Vec3 out = d - m * (2 * dm);
+      if (out.z < 0) ++leaving;
+    }
+  return static_cast<double>(leaving) / (kLobeTableStrata * kLobeTableStrata);
+}
+
+}  // namespace
+
+skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesystem::path& specimenDir) {
+  try {
+    skin::Specimen specimen = skin::loadSpecimen(desc.skin.specimen, specimenDir);
+    for (const auto& o : desc.skin.overrides) skin::applyOverride(specimen, o);
+    const double extra = desc.skin.waterReduction;
+    if (!(extra >= 0 && extra <= 1)) throw SceneError(desc.where, "water reduction must lie in [0, 1]");
+    specimen.waterReduction = 1 - (1 - specimen.waterReduction) * (1 - extra);
+    skin::validateSpecimen(specimen);
+    return specimen;
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SceneError(desc.where, std::string("skin material '") + desc.name + "': " + e.what());
+  }
+}
+
+SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex,
+                           double unitCm, const std::vector<double>& channelWavelengths,
+                           const skin::SpectralDatabase& spectra, const std::string& skinMode,
+                           double effectTolerance)
+    : materialIndex_(materialIndex), unitCm_(unitCm), aspectRatio_(specimen.surfaceFoldAspectRatio),
+      freckles_(desc.skin.freckles, desc.where) {
+  if (!(unitCm > 0) || !std::isfinite(unitCm)) throw SceneError(desc.where, "unit_cm must be a positive number");
+  if (!desc.skin.melaninMap.empty()) {
+    melaninMap_ = std::make_unique<TextureMap>(desc.skin.melaninMap, desc.where);
+    mapMin_ = desc.skin.melaninMapMin;
+    mapMax_ = desc.skin.melaninMapMax;
+  }
+  if (!(mapMin_ >= 0) || !(mapMax_ >= 0) || !std::isfinite(mapMin_) || !std::isfinite(mapMax_))
+    throw SceneError(desc.where, "melanin map multipliers must be finite and >= 0");
+  const double lo = std::min(mapMin_, mapMax_) * freckles_.minMultiplier();
+  const double hi = std::max(mapMin_, mapMax_) * freckles_.maxMultiplier();
+  if (skinMode != "walk" && skinMode != "table")
+    throw SceneError(desc.where, "skin mode must be \"walk\" or \"table\", got \"" + skinMode + "\"");
+  const bool tableMode = skinMode == "table";
+  walks_ = std::make_unique<SkinWalkCache>(specimen, lo, hi, channelWavelengths, spectra, desc.where,
+                                           tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
+                                           effectTolerance);
+  if (tableMode)
+    tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(), SkinTableCache::renderSettings());
+  for (int i = 0; i < kLobeTableSize; ++i)
+    lobeNormalisation_.push_back(facetReflectionLeaves(aspectRatio_, static_cast<double>(i) / (kLobeTableSize - 1)));
+}
+
+double SkinMaterial::melaninMultiplier(const SurfaceHit& hit) const {
+  double m = 1;
+  if (melaninMap_) {
+    const double t = hit.hasUv ? melaninMap_->lookup(hit.uv) : 0.0;
+    m = mapMin_ + (mapMax_ - mapMin_) * t;
+  }
+  return m * freckles_.multiplier(hit.position * unitCm_);
+}
+
+double SkinMaterial::surfaceLobeNormalisation(double cosIncident) const {
+  const double x = std::clamp(cosIncident, 0.0, 1.0) * (kLobeTableSize - 1);
+  const int i = std::min(static_cast<int>(x), kLobeTableSize - 2);
+  const double f = x - i;
+  return (1 - f) * lobeNormalisation_[static_cast<std::size_t>(i)] + f * lobeNormalisation_[static_cast<std::size_t>(i) + 1];
+}
+
+double SkinMaterial::surfaceLobeDensity(const glm::dvec3& incident, const glm::dvec3& normal,
+                                        const glm::dvec3& outgoing) const {
+  const double cosIn = -glm::dot(incident, normal), cosOut = glm::dot(outgoing, normal);
+  if (!(cosIn > 0) || !(cosOut > 0)) return 0;
+  const glm::dvec3 halfVector = glm::normalize(outgoing - incident);  // the mirroring facet normal
+  const double cosFacet = glm::dot(halfVector, normal);
+  if (!(cosFacet > 0)) return 0;
+  const double norm = surfaceLobeNormalisation(cosIn);
+  if (!(norm > 0)) return 0;
+  return facetDensityPerSr(aspectRatio_, cosFacet) / (4 * std::fabs(glm::dot(outgoing, halfVector))) / norm;
+}
+
+SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t channel,
+                                  const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
+                                  skin::Rng& rng) const {
+  // Normals facing the arriving ray (a back-face hit is treated as skin seen from outside).
+  glm::dvec3 ng = hit.geometricNormal, ns = hit.shadingNormal;
+  if (glm::dot(direction, ng) > 0) {
+    ng = -ng;
+    ns = -ns;
+  }
+  if (!(glm::dot(direction, ns) < 0)) ns = ng;  // the ray is below the shading hemisphere
+  const skin::Frame frame(toSkin(-ns));         // z into the skin
+  const skin::Vec3 incident = frame.toLocal(toSkin(direction));
+  const double multiplier = melaninMultiplier(hit);
+  const int level = walks_->level(multiplier, rng.uniform());
+  const skin::SkinPath path = tables_ ? tables_->table(channel, level).sample(incident, rng)
+                                      : walks_->walk(channel, level).trace(incident, rng);
+
+  SkinScatter out;
+  out.point = hit.position;
+  out.shadingNormal = ns;
+  out.geometricNormal = ng;
+  switch (path.end) {
+    case skin::PathEnd::Absorbed:
+    case skin::PathEnd::Transmitted:
+      out.kind = SkinScatter::Kind::Absorbed;
+      return out;
+    case skin::PathEnd::EventLimit:
+      out.kind = SkinScatter::Kind::EventLimit;
+      return out;
+    case skin::PathEnd::SurfaceReflection:
+      out.kind = SkinScatter::Kind::SurfaceReflection;
+      out.direction = glm::normalize(toGlm(frame.toWorld(path.exitDirection)));
+      return out;
+    case skin::PathEnd::SubsurfaceReflection:
+      break;
+  }
+  out.kind = SkinScatter::Kind::SubsurfaceReflection;
+  const glm::dvec3 offset = (toGlm(frame.t) * path.exitOffsetXCm + toGlm(frame.b) * path.exitOffsetYCm) / unitCm_;
+  const double offsetLength = glm::length(offset);
+  if (!(offsetLength > 0)) return out;
+  const glm::dvec3 planePoint = hit.position + offset;
+  const double probe = 4 * offsetLength;
+  // Probes: from above looking down, from below looking up (both along the entry normal; exact on
+  // a plane), then — for offsets beyond the local curvature, where the normal line misses the
+  // surface — from the tangent-plane point towards a point one offset length below the entry.
+  const glm::dvec3 below = hit.position - ns * offsetLength;
+  const Ray probes[3] = {{planePoint + ns * probe, -ns, 2 * probe},
+                         {planePoint - ns * probe, ns, 2 * probe},
+                         {planePoint, glm::normalize(below - planePoint), glm::length(below - planePoint)}};
+  for (const Ray& ray : probes) {
+    const std::optional<SurfaceHit> found = geometry.intersect(ray);
+    if (!found || materialOfShape[found->shape] != materialIndex_) continue;
+    out.point = found->position;
+    // Same side convention as at the entry (front faces by winding, or outward for spheres).
+    const bool flip = glm::dot(direction, hit.geometricNormal) > 0;
+    out.geometricNormal = flip ? -found->geometricNormal : found->geometricNormal;
+    out.shadingNormal = flip ? -found->shadingNormal : found->shadingNormal;
+    return out;
+  }
+  out.exitFallback = true;
+  return out;
+}
+
+}  // namespace hylios

@@ -1,0 +1,120 @@
+// The HyLIoS skin material: at a camera-path hit on skin, the paper's random walk (skin/skin_walk.h)
+// simulates both the rough-surface reflection and the subsurface transport, and its outcome drives
+// the path (paper Sec. 4; DESIGN.md §5).
+//
+// | parameter (MaterialDesc::skin)  | meaning                                                      |
+// |---------------------------------|--------------------------------------------------------------|
+// | specimen, overrides             | the layered skin (Tables 1–2), loaded from scenes/specimens/ |
+// | water_reduction                 | extra fraction r: water × (1 − r_specimen)(1 − r)            |
+// | melanin_map, min, max           | UV texture t → melanin multiplier min + (max − min)·t        |
+// | freckles                        | procedural spots (renderer/tracing/freckle_field.h), multiplier      |
+//
+// ESTIMATOR. Reciprocity lets the walk start on the camera side: the camera ray, direction ω_c,
+// hits skin at x. Local frame (skin::Frame): z = −n (into the skin, n the shading normal facing the
+// ray), t and b span the tangent plane; the walk gets ω_c in that frame and runs for the specimen
+// at x (melanin multiplier at x, stochastically rounded to a cached level, skin_walk_cache.h) at
+// the path's wavelength. The walk is analog (no weights), so each outcome has probability:
+//   absorbed (or event limit) — the path ends, contributing 0;
+//   SurfaceReflection (probability R_s(ω_c)), direction ω_s — the path continues from x along the
+//     walk's own ω_s, throughput unchanged. Area and environment lights are reached only by this
+//     continuation, with MIS weight 1 (no light sampling for that vertex: the walk's density of
+//     ω_s — multiple facet bounces, Fresnel-weighted facets, redraws — has no closed form). Delta
+//     (point/spot) lights, which no continuation can hit, get next-event estimation with a model
+//     lobe g(ω) — the single mirror reflection about a facet normal drawn from P_s (Sec. 4.3),
+//     per solid angle g = [P_s(θ_h)/(2π sinθ_h)] / (4|ω·h|) / N(θ_c), h the half vector, N the
+//     probability that such a reflection faces the ray and leaves the surface (tabulated per
+//     material over cosθ_c). Contribution: g(ω_l)·I/d²; in expectation R_s·g·I/d².
+//   SubsurfaceReflection (probability R_ss(ω_c)) at lateral offset (Δx, Δy) cm — the exit point x_o
+//     is x + (Δx·t + Δy·b)/unitCm projected back onto the skin surface by probe rays along ∓n
+//     (from 4|Δ| above, then from 4|Δ| below), then — for offsets beyond the local curvature —
+//     towards the point |Δ| below x; only shapes of this material count. If all miss, x_o = x
+//     (counted in RenderStats::exitFallbacks). The walk itself is plane-parallel: offsets comparable
+//     to the radius of curvature (millimetres to centimetres in the near IR) are approximations. The exit lobe is modelled as
+//     Lambertian about the shading normal n_o at x_o: q(ω) = cosθ_o/π. Light is estimated at x_o by
+//     next-event estimation with q (all lights) plus a continuation along a direction sampled from
+//     q, the two combined by the power heuristic (delta lights: NEE only). The walk's own exit
+//     direction is not used for subsurface exits: MIS needs the density of the continued direction,
+//     and only a sample from q has a known one, so NEE and continuation sample the same lobe and
+//     their combination is unbiased for it.
+// Energy: the expected throughput leaving a skin hit is R_s(ω_c) + R_ss(ω_c) = R(ω_c), the walk's
+// total reflectance for that incidence, whatever the lobes; approximations affect only the angular
+// distribution of delta-light highlights (g) and of subsurface exitance (q). Under a uniform
+// environment L a skin pixel converges to L·R(ω_c) exactly (tests/renderer/integrator_test.cpp).
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/tracing/embree_scene.h"
+#include "renderer/tracing/freckle_field.h"
+#include "renderer/scene/scene.h"
+#include "renderer/tracing/skin_table_cache.h"
+#include "renderer/tracing/skin_walk_cache.h"
+#include "renderer/scene/texture_map.h"
+#include "skin/core/random.h"
+#include "skin/spectral_database.h"
+
+namespace hylios {
+
+/// How a walk at a skin hit ended, in world terms.
+struct SkinScatter {
+  enum class Kind { Absorbed, EventLimit, SurfaceReflection, SubsurfaceReflection } kind = Kind::Absorbed;
+  glm::dvec3 point;              ///< entry point (surface) or projected exit point (subsurface)
+  glm::dvec3 shadingNormal;      ///< at `point`, on the side the light left from
+  glm::dvec3 geometricNormal;    ///< at `point`, same side
+  glm::dvec3 direction;          ///< SurfaceReflection: the walk's exit direction (world, unit)
+  bool exitFallback = false;     ///< SubsurfaceReflection: no surface found, exit at the entry point
+};
+
+class SkinMaterial {
+ public:
+  /// `specimen` already has the material's overrides applied; `materialIndex` is this material's
+  /// index in SceneDesc::materials (exit points must land on shapes of this material).
+  /// skinMode "table" samples exit tables (skin/exit_table.h, from ExitTableCache::shared(), with
+  /// SkinTableCache::kTableMelaninLevels levels) instead of walking; "walk" runs the exact walk.
+  SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex, double unitCm,
+               const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
+               const std::string& skinMode = "walk",
+               double effectTolerance = skin::kDefaultEffectTolerance);  ///< ε, skin/effect_plan.h
+
+  /// Melanin multiplier at a hit: melanin map (by uv) × freckles (by position in cm).
+  double melaninMultiplier(const SurfaceHit& hit) const;
+
+  /// Runs the walk for a ray travelling along `direction` that hit skin at `hit`.
+  /// `materialOfShape[i]` is the material index of shape i.
+  SkinScatter scatter(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t channel,
+                      const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
+                      skin::Rng& rng) const;
+
+  /// The model lobe g (per sr) of a surface reflection into `outgoing` for a ray travelling along
+  /// `incident` onto a surface with outward normal `normal` (all unit, world).
+  double surfaceLobeDensity(const glm::dvec3& incident, const glm::dvec3& normal, const glm::dvec3& outgoing) const;
+  /// N(cosθ) of the header comment (probability that a single facet reflection faces the ray
+  /// and leaves the surface), interpolated from the table.
+  double surfaceLobeNormalisation(double cosIncident) const;
+
+  const SkinWalkCache& walks() const { return *walks_; }
+  /// The exit tables in table mode, else null.
+  const SkinTableCache* tables() const { return tables_.get(); }
+  double surfaceAspectRatio() const { return aspectRatio_; }
+
+ private:
+  std::size_t materialIndex_;
+  double unitCm_;
+  double aspectRatio_;
+  std::unique_ptr<TextureMap> melaninMap_;
+  double mapMin_ = 1, mapMax_ = 1;
+  FreckleField freckles_;
+  std::unique_ptr<SkinWalkCache> walks_;
+  std::unique_ptr<SkinTableCache> tables_;  ///< table mode only
+  std::vector<double> lobeNormalisation_;  ///< N at cosθ = i / (size − 1)
+};
+
+/// The specimen of a skin material: loaded by name or path (specimenDir for names), overrides
+/// applied in order, water reduction combined. Throws SceneError at desc.where.
+skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesystem::path& specimenDir);
+
+}  // namespace hylios

@@ -1,0 +1,36 @@
+// Exit tables (skin/exit_table.h) for the `table` skin mode: one per film channel and melanin level
+// of a skin material's SkinWalkCache, obtained from an ExitTableCache (loaded from disk or built,
+// in parallel) before the first ray.
+//
+// Table mode uses kTableMelaninLevels levels instead of SkinWalkCache::kMelaninLevels: the
+// stochastic rounding between levels already interpolates the response linearly in the multiplier
+// (skin_walk_cache.h), and every level costs channels × K × N walks to build.
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "renderer/tracing/exit_table_cache.h"
+#include "renderer/tracing/skin_walk_cache.h"
+#include "skin/exit_table.h"
+
+namespace hylios {
+
+class SkinTableCache {
+ public:
+  static constexpr int kTableMelaninLevels = 9;
+  /// The settings the renderer builds its tables with (K = 12 cosine bins, N = 40 000 rays per bin).
+  static skin::ExitTableSettings renderSettings();
+
+  SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache, const skin::ExitTableSettings& settings);
+
+  const skin::ExitTable& table(std::size_t channel, int level) const {
+    return *tables_[static_cast<std::size_t>(level) * channels_ + channel];
+  }
+
+ private:
+  std::size_t channels_;
+  std::vector<std::shared_ptr<const skin::ExitTable>> tables_;  ///< [level * channels + channel]
+};
+
+}  // namespace hylios

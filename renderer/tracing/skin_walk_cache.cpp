@@ -1,0 +1,117 @@
+#include "renderer/tracing/skin_walk_cache.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <string>
+
+#include "skin/skin_optics.h"
+
+namespace hylios {
+
+namespace {
+
+/// One plan for a channel from pilots at the two end melanin levels (see the header).
+skin::EffectPlan planChannel(const skin::Specimen& lowest, const skin::Specimen& highest,
+                             const skin::SpectralDatabase& spectra, double wavelengthNm, double epsilon) {
+  std::vector<skin::SkinOptics> ends{skin::computeSkinOptics(lowest, spectra, wavelengthNm)};
+  if (&lowest != &highest) ends.push_back(skin::computeSkinOptics(highest, spectra, wavelengthNm));
+  skin::PlanOptions options;
+  options.incidenceDeg = {0.0, 60.0};
+  options.pilotRays = SkinWalkCache::kRenderPilotRays;
+  return skin::planEffects(ends, epsilon, options);
+}
+
+}  // namespace
+
+skin::Specimen scaleMelanin(const skin::Specimen& specimen, double multiplier) {
+  skin::Specimen scaled = specimen;
+  for (auto& v : scaled.melanosomeFraction) v *= multiplier;
+  for (auto& v : scaled.colloidalMelaninFraction) v *= multiplier;
+  return scaled;
+}
+
+SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
+                             const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
+                             const FileLocation& where, int levels, double effectTolerance)
+    : lo_(std::min(minMultiplier, maxMultiplier)), hi_(std::max(minMultiplier, maxMultiplier)),
+      levels_(hi_ > lo_ ? levels : 1), channels_(channelWavelengths.size()), effectTolerance_(effectTolerance) {
+  if (!(effectTolerance >= 0 && effectTolerance <= 1))
+    throw SceneError(where, "effect tolerance must lie in [0, 1], got " + std::to_string(effectTolerance));
+  if (levels < 2) throw SceneError(where, "melanin levels must be at least 2, got " + std::to_string(levels));
+  if (!(lo_ >= 0) || !std::isfinite(hi_)) throw SceneError(where, "melanin multipliers must be finite and >= 0");
+  std::vector<skin::Specimen> specimens;
+  for (int k = 0; k < levels_; ++k) {
+    specimens.push_back(scaleMelanin(specimen, levelMultiplier(k)));
+    try {
+      skin::validateSpecimen(specimens.back());
+    } catch (const std::exception& e) {
+      throw SceneError(where, "specimen '" + specimen.name + "' with melanin × " + std::to_string(levelMultiplier(k)) +
+                                  " is not valid: " + e.what());
+    }
+  }
+  // A wavelength shared by several channels (overlapping bands) is prepared once.
+  std::vector<double> distinct;
+  for (double w : channelWavelengths) {
+    const auto at = std::find(distinct.begin(), distinct.end(), w);
+    distinctOfChannel_.push_back(static_cast<std::size_t>(at - distinct.begin()));
+    if (at == distinct.end()) distinct.push_back(w);
+  }
+  distinctWavelengths_ = distinct.size();
+  walks_.resize(static_cast<std::size_t>(levels_) * distinctWavelengths_);
+  std::mutex errorMutex;
+  std::string error;
+  if (effectTolerance > 0) {
+    plans_.resize(distinctWavelengths_);
+    tbb::parallel_for(std::size_t{0}, distinctWavelengths_, [&](std::size_t c) {
+      try {
+        plans_[c] = planChannel(specimens.front(), specimens.back(), spectra, distinct[c], effectTolerance);
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(errorMutex);
+        if (error.empty()) error = e.what();
+      }
+    });
+    if (!error.empty()) throw SceneError(where, "skin specimen '" + specimen.name + "': " + error);
+  }
+  tbb::parallel_for(std::size_t{0}, walks_.size(), [&](std::size_t i) {
+    const std::size_t k = i / distinctWavelengths_, c = i % distinctWavelengths_;
+    try {
+      const skin::SkinOptics optics = skin::computeSkinOptics(specimens[k], spectra, distinct[c]);
+      if (plans_.empty())
+        walks_[i].emplace(optics);
+      else
+        walks_[i].emplace(plans_[c].apply(optics), plans_[c].walk);
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(errorMutex);
+      if (error.empty()) error = e.what();
+    }
+  });
+  if (!error.empty()) throw SceneError(where, "skin specimen '" + specimen.name + "': " + error);
+}
+
+double SkinWalkCache::levelMultiplier(int level) const {
+  return levels_ == 1 ? lo_ : lo_ + (hi_ - lo_) * level / (levels_ - 1);
+}
+
+int SkinWalkCache::level(double multiplier, double u) const {
+  if (levels_ == 1) return 0;
+  const double t = std::clamp((multiplier - lo_) / (hi_ - lo_), 0.0, 1.0) * (levels_ - 1);
+  const int below = std::min(static_cast<int>(t), levels_ - 1);
+  return (u < t - below) ? below + 1 : below;
+}
+
+std::string SkinWalkCache::explainEffectPlans() const {
+  if (plans_.empty()) return "  effect planning off (epsilon = 0): every process simulated\n";
+  std::string text;
+  for (const skin::EffectPlan& plan : plans_) text += plans_.size() <= 4 ? plan.explain() : "  " + plan.summary();
+  return text;
+}
+
+const skin::SkinWalk& SkinWalkCache::walk(std::size_t channel, int level) const {
+  return *walks_[static_cast<std::size_t>(level) * distinctWavelengths_ + distinctOfChannel_[channel]];
+}
+
+}  // namespace hylios

@@ -1,0 +1,44 @@
+#include "skin/core/toml_location.h"
+
+#include <fmt/format.h>
+
+namespace hylios::skin {
+
+TomlPosition tomlPosition(const toml::source_region& region) {
+  TomlPosition position;
+  if (region.begin.line != 0) position.line = static_cast<int>(region.begin.line);
+  if (region.begin.column != 0) position.column = static_cast<int>(region.begin.column);
+  return position;
+}
+
+std::string tomlLocation(const std::string& source, const toml::source_region& region) {
+  const TomlPosition p = tomlPosition(region);
+  return fmt::format("{}:{}:{}", source, p.line, p.column);
+}
+
+std::string_view tomlTypeName(toml::node_type type) {
+  switch (type) {
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a floating-point number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    default:
+      return "nothing";
+  }
+}
+
+}  // namespace hylios::skin

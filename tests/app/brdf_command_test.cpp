@@ -1,0 +1,104 @@
+// `hylios brdf` run in-process: one CSV row per direction bin with the documented columns, the
+// bins add up to the hemispherical reflectance of the same walk, output is identical at any
+// thread count, and bad arguments are clear errors that write nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "app/commands.h"
+#include "renderer/scene/data_paths.h"
+#include "tests/support/scratch_csv.h"
+#include "skin/skin_simulation.h"
+#include "skin/specimen.h"
+
+namespace hylios {
+namespace {
+
+using test::columnOf;
+using test::readCsv;
+using test::ScratchFolder;
+
+void runBrdf(const std::string& arguments) { test::runCommandLine(registerBrdfCommand, "brdf " + arguments); }
+
+std::string contents(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
+  ScratchFolder scratch("brdf-test");
+  const auto csv = scratch.path / "brdf.csv";
+  const auto png = scratch.path / "brdf.png";
+  runBrdf("--specimen S1 --angle 45 --wavelengths 550 --rays 3000 --seed 5 --polar-bins 6 --azimuth-bins 4 --out " +
+          csv.string() + " --plot " + png.string());
+  const auto rows = readCsv(csv);
+  ASSERT_EQ(rows.size(), 1u + 6 * 4);
+  const auto& header = rows[0];
+  ASSERT_EQ(header.size(), 17u);
+  EXPECT_EQ(header[0], "polar_lower_deg");
+  EXPECT_EQ(header[4], "solid_angle_sr");
+  EXPECT_EQ(header[5], "surface_per_sr");
+  EXPECT_EQ(header[10], "total_per_sr_stderr");
+  EXPECT_EQ(header[16], "total_brdf_stderr");
+  const std::size_t omega = columnOf(header, "solid_angle_sr"), total = columnOf(header, "total_per_sr"),
+                    surface = columnOf(header, "surface_per_sr");
+  double reflectance = 0, surfaceReflectance = 0, solidAngle = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), header.size()) << "row " << r;
+    reflectance += std::stod(rows[r][total]) * std::stod(rows[r][omega]);
+    surfaceReflectance += std::stod(rows[r][surface]) * std::stod(rows[r][omega]);
+    solidAngle += std::stod(rows[r][omega]);
+  }
+  EXPECT_NEAR(solidAngle, 2 * M_PI, 1e-4);  // printed with 6 significant digits
+  // The same walk through the library (same seed, same wavelength stream).
+  const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
+  const auto spectra = skin::SpectralDatabase::load(spectraDir());
+  skin::WalkRunOptions run;
+  run.incidenceDeg = 45;
+  run.rays = 3000;
+  run.seed = 5;
+  const skin::SkinTally tally = skin::simulateSkin(skin::computeSkinOptics(specimen, spectra, 550), run);
+  EXPECT_NEAR(reflectance, tally.reflectance().mean, 1e-5);
+  EXPECT_NEAR(surfaceReflectance, tally.surfaceReflectance().mean, 1e-5);
+  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+}
+
+TEST(BrdfCommand, SameOutputAtAnyThreadCountAndVisibleHasEveryBin) {
+  ScratchFolder scratch("brdf-threads-test");
+  const auto one = scratch.path / "one.csv", two = scratch.path / "two.csv";
+  const std::string common = "--wavelengths 400,700 --rays 2000 --polar-bins 3 --azimuth-bins 2 --out ";
+  runBrdf(common + one.string() + " --threads 1");
+  runBrdf(common + two.string() + " --threads 2");
+  EXPECT_EQ(contents(one), contents(two));
+  const auto visible = scratch.path / "visible.csv";
+  runBrdf("--visible --rays 100 --polar-bins 2 --azimuth-bins 3 --out " + visible.string());
+  EXPECT_EQ(readCsv(visible).size(), 1u + 2 * 3);
+}
+
+TEST(BrdfCommand, BadArgumentsAreClearErrors) {
+  ScratchFolder scratch("brdf-bad-test");
+  const auto csv = scratch.path / "bad.csv";
+  try {
+    runBrdf("--rays 10 --out " + csv.string());
+    FAIL() << "accepted neither --wavelengths nor --visible";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--visible"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(runBrdf("--visible --wavelengths 500 --out " + csv.string()), CLI::ExcludesError);
+  EXPECT_THROW(runBrdf("--wavelengths 500 --polar-bins 0 --out " + csv.string()), CLI::ValidationError);
+  EXPECT_THROW(runBrdf("--wavelengths 500 --angle 90 --out " + csv.string()), CLI::ValidationError);
+  EXPECT_THROW(runBrdf("--wavelengths 500"), CLI::RequiredError);
+  try {
+    runBrdf("--wavelengths 100 --rays 10 --out " + csv.string());
+    FAIL() << "accepted 100 nm";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("100"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(csv));
+}
+
+}  // namespace
+}  // namespace hylios

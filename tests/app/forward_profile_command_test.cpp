@@ -1,0 +1,78 @@
+// `hylios forward-profile` run in-process: one row per polar bin, the first bin normalised to 1,
+// the rows add up to the transmittance of the same epidermis-only walk, and bad arguments are
+// clear errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "app/commands.h"
+#include "renderer/scene/data_paths.h"
+#include "tests/support/scratch_csv.h"
+#include "skin/skin_simulation.h"
+#include "skin/specimen.h"
+
+namespace hylios {
+namespace {
+
+using test::columnOf;
+using test::readCsv;
+using test::ScratchFolder;
+
+void runProfile(const std::string& arguments) {
+  test::runCommandLine(registerForwardProfileCommand, "forward-profile " + arguments);
+}
+
+TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
+  ScratchFolder scratch("forward-profile-test");
+  const auto csv = scratch.path / "fig8.csv";
+  const auto png = scratch.path / "fig8.png";
+  runProfile("--wavelength 400 --rays 4000 --seed 3 --polar-bins 9 --out " + csv.string() + " --plot " + png.string());
+  const auto rows = readCsv(csv);
+  ASSERT_EQ(rows.size(), 1u + 9);
+  const auto& header = rows[0];
+  ASSERT_EQ(header.size(), 7u);
+  EXPECT_EQ(header[0], "polar_lower_deg");
+  EXPECT_EQ(header[3], "transmitted_per_sr");
+  EXPECT_EQ(header[5], "relative_to_normal");
+  EXPECT_EQ(header[6], "relative_to_normal_stderr");
+  EXPECT_EQ(std::stod(rows[1][columnOf(header, "relative_to_normal")]), 1.0);
+  double transmitted = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), header.size());
+    transmitted += std::stod(rows[r][columnOf(header, "transmitted_per_sr")]) *
+                   std::stod(rows[r][columnOf(header, "solid_angle_sr")]);
+  }
+  // The same walk: S2 (the default), epidermis only, bottom index matched to the stratum basale.
+  const skin::Specimen specimen = skin::loadSpecimen("S2", specimenDir());
+  const auto spectra = skin::SpectralDatabase::load(spectraDir());
+  const skin::SkinOptics optics = skin::computeSkinOptics(specimen, spectra, 400);
+  skin::WalkRunOptions run;
+  run.rays = 4000;
+  run.seed = 3;
+  run.walk.deepestLayer = skin::Layer::StratumBasale;
+  run.walk.belowRefractiveIndex = optics[skin::Layer::StratumBasale].refractiveIndex;
+  const skin::SkinTally tally = skin::simulateSkin(optics, run);
+  EXPECT_NEAR(transmitted, tally.transmittance().mean, 1e-5);
+  EXPECT_GT(tally.transmittance().mean, 0.1);  // 400 nm: a thin epidermis lets much through
+  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+}
+
+TEST(ForwardProfileCommand, BadArgumentsAreClearErrors) {
+  ScratchFolder scratch("forward-profile-bad-test");
+  const auto csv = scratch.path / "bad.csv";
+  try {
+    runProfile("--below-index water --rays 10 --out " + csv.string());
+    FAIL() << "accepted --below-index water";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--below-index 'water'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(runProfile("--below-index 0.5 --rays 10 --out " + csv.string()), std::invalid_argument);
+  EXPECT_THROW(runProfile("--polar-bins 0 --out " + csv.string()), CLI::ValidationError);
+  EXPECT_THROW(runProfile("--rays 10"), CLI::RequiredError);
+  EXPECT_ANY_THROW(runProfile("--wavelength 3000 --rays 10 --out " + csv.string()));
+  EXPECT_FALSE(std::filesystem::exists(csv));
+}
+
+}  // namespace
+}  // namespace hylios

@@ -1,0 +1,64 @@
+// InterruptSignalScope: SIGINT/SIGTERM are recorded instead of terminating; the first signal is
+// kept; a second signal of the same kind would take the default action (SA_RESETHAND); the
+// previous handlers come back when the scope ends; one scope at a time.
+#include "app/interrupt_signal.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <stdexcept>
+
+using hylios::InterruptSignalScope;
+
+namespace {
+
+void (*handlerOf(int signal))(int) {
+  struct sigaction current;
+  sigaction(signal, nullptr, &current);
+  return current.sa_handler;
+}
+
+}  // namespace
+
+TEST(InterruptSignalScope, RecordsTheFirstSignalAndResetsItsHandler) {
+  const auto before = handlerOf(SIGINT);
+  {
+    const InterruptSignalScope scope;
+    EXPECT_FALSE(scope.requested());
+    EXPECT_EQ(scope.signalNumber(), 0);
+    EXPECT_NE(handlerOf(SIGINT), SIG_DFL);
+    ASSERT_EQ(std::raise(SIGINT), 0);  // handled synchronously in this thread
+    EXPECT_TRUE(scope.requested());
+    EXPECT_EQ(scope.signalNumber(), SIGINT);
+    EXPECT_EQ(handlerOf(SIGINT), SIG_DFL);  // a second Ctrl-C terminates
+    ASSERT_EQ(std::raise(SIGTERM), 0);
+    EXPECT_EQ(scope.signalNumber(), SIGINT);  // the first signal is kept
+  }
+  EXPECT_EQ(handlerOf(SIGINT), before);
+}
+
+TEST(InterruptSignalScope, SigtermAndRestoringPreviousHandlers) {
+  std::signal(SIGTERM, SIG_IGN);
+  {
+    const InterruptSignalScope scope;
+    EXPECT_NE(handlerOf(SIGTERM), SIG_IGN);
+    ASSERT_EQ(std::raise(SIGTERM), 0);
+    EXPECT_EQ(scope.signalNumber(), SIGTERM);
+  }
+  EXPECT_EQ(handlerOf(SIGTERM), SIG_IGN);
+  std::signal(SIGTERM, SIG_DFL);
+  const InterruptSignalScope fresh;  // a new scope starts without a request
+  EXPECT_FALSE(fresh.requested());
+}
+
+TEST(InterruptSignalScope, OneScopeAtATime) {
+  const InterruptSignalScope scope;
+  EXPECT_THROW(InterruptSignalScope second, std::logic_error);
+}
+
+TEST(InterruptSignalScope, ExitStatusAndNames) {
+  EXPECT_EQ(InterruptSignalScope::exitStatusFor(SIGINT), 130);
+  EXPECT_EQ(InterruptSignalScope::exitStatusFor(SIGTERM), 143);
+  EXPECT_STREQ(InterruptSignalScope::signalName(SIGINT), "SIGINT");
+  EXPECT_STREQ(InterruptSignalScope::signalName(SIGTERM), "SIGTERM");
+}

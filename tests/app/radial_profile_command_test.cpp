@@ -1,0 +1,75 @@
+// `hylios radial-profile` run in-process: one row per annulus with its exact area, the annuli add
+// up to (at most) the subsurface reflectance of the same walk, and bad arguments are clear errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "app/commands.h"
+#include "renderer/scene/data_paths.h"
+#include "tests/support/scratch_csv.h"
+#include "skin/skin_simulation.h"
+#include "skin/specimen.h"
+
+namespace hylios {
+namespace {
+
+using test::columnOf;
+using test::readCsv;
+using test::ScratchFolder;
+
+void runProfile(const std::string& arguments) {
+  test::runCommandLine(registerRadialProfileCommand, "radial-profile " + arguments);
+}
+
+TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
+  ScratchFolder scratch("radial-profile-test");
+  const auto csv = scratch.path / "radial.csv";
+  const auto png = scratch.path / "radial.png";
+  runProfile("--specimen S1 --wavelength 550 --rays 3000 --seed 2 --max-radius-cm 2 --bins 20 --out " + csv.string() +
+             " --plot " + png.string());
+  const auto rows = readCsv(csv);
+  ASSERT_EQ(rows.size(), 1u + 20);
+  const auto& header = rows[0];
+  ASSERT_EQ(header.size(), 7u);
+  EXPECT_EQ(header[0], "inner_radius_cm");
+  EXPECT_EQ(header[2], "annulus_area_cm2");
+  EXPECT_EQ(header[5], "reflectance_per_cm2");
+  double subsurface = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), header.size());
+    const double inner = std::stod(rows[r][0]), outer = std::stod(rows[r][1]);
+    EXPECT_NEAR(inner, 0.1 * static_cast<double>(r - 1), 1e-9);
+    EXPECT_NEAR(std::stod(rows[r][2]), M_PI * (outer * outer - inner * inner), 1e-5 * outer * outer);
+    subsurface += std::stod(rows[r][columnOf(header, "reflectance_per_cm2")]) * std::stod(rows[r][2]);
+  }
+  const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
+  const auto spectra = skin::SpectralDatabase::load(spectraDir());
+  skin::WalkRunOptions run;
+  run.rays = 3000;
+  run.seed = 2;
+  const skin::SkinTally tally = skin::simulateSkin(skin::computeSkinOptics(specimen, spectra, 550), run);
+  // Exits beyond 2 cm from the entry point are rare but possible: the annuli hold at most R_d.
+  EXPECT_LE(subsurface, tally.subsurfaceReflectance().mean + 1e-5);
+  EXPECT_GT(subsurface, tally.subsurfaceReflectance().mean - 0.01);
+  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+}
+
+TEST(RadialProfileCommand, BadArgumentsAreClearErrors) {
+  ScratchFolder scratch("radial-profile-bad-test");
+  const auto csv = scratch.path / "bad.csv";
+  EXPECT_THROW(runProfile("--bins 0 --out " + csv.string()), CLI::ValidationError);
+  EXPECT_THROW(runProfile("--max-radius-cm -1 --out " + csv.string()), CLI::ValidationError);
+  EXPECT_THROW(runProfile("--angle 95 --out " + csv.string()), CLI::ValidationError);
+  EXPECT_THROW(runProfile("--rays 10"), CLI::RequiredError);
+  try {
+    runProfile("--specimen S9 --rays 10 --out " + csv.string());
+    FAIL() << "accepted specimen S9";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("S9"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(csv));
+}
+
+}  // namespace
+}  // namespace hylios
