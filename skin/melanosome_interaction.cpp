@@ -17,12 +17,6 @@ void requirePositiveIndex(double n, const char* what) {
                                 std::to_string(n) + " is not positive and finite");
 }
 
-/// x rounded to 12 significant digits (x > 0): the path-length table's key, so that indices
-/// dispersed by the same factor give one table despite last-bit differences in their ratio.
-double tableKey(double x) {
-  const double scale = std::pow(10.0, 11 - std::floor(std::log10(x)));
-  return std::round(x * scale) / scale;
-}
 }  // namespace
 
 MelanosomeLayer::MelanosomeLayer(double semiMinor, double semiMajor, double interiorMuA,
@@ -68,7 +62,7 @@ MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer, Melanoso
 void MelanosomeLayer::tabulate(double nLayer, double nMelanin) {
   tabulated_ = true;
   if (muA_perMinorAxis_ == 0) return;  // clear melanosomes never absorb: no table needed
-  const auto table = MelanosomePathLengths::shared(tableKey(geometry_.aspect), tableKey(nMelanin / nLayer));
+  const auto table = MelanosomePathLengths::shared(melanosomeTableKey(geometry_.aspect), melanosomeTableKey(nMelanin / nLayer));
   const double one = table->absorptionProbability(muA_perMinorAxis_);  // one pass over the table
   absorbedByWhole_ = MelanosomePathLengths::absorptionByCount(one, wholeCount_);  // count 1 when dispersed
   absorbedByWholePlusOne_ = MelanosomePathLengths::absorptionByCount(one, wholeCount_ + 1);

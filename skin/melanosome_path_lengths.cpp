@@ -109,4 +109,9 @@ std::shared_ptr<const MelanosomePathLengths> MelanosomePathLengths::shared(doubl
   return table;
 }
 
+double melanosomeTableKey(double x) {
+  const double scale = std::pow(10.0, 11 - std::floor(std::log10(x)));
+  return std::round(x * scale) / scale;
+}
+
 }  // namespace hylios::skin

@@ -64,4 +64,8 @@ class MelanosomePathLengths {
   std::size_t reflectedAtEntry_ = 0;
 };
 
+/// x rounded to 12 significant digits (x > 0): the key of the shared tables, so that indices
+/// dispersed by the same factor give one table despite last-bit differences in their ratio.
+double melanosomeTableKey(double x);
+
 }  // namespace hylios::skin

@@ -29,53 +29,61 @@ std::size_t SkinTally::directionBin(const Vec3& exitDirection) const {
          bin(azimuth, -kPi, kPi, options_.azimuthBins);
 }
 
-Estimate SkinTally::binomial(std::uint64_t count) const {
-  if (rays_ == 0) return {0.0, 0.0};
-  const double n = static_cast<double>(rays_);
-  const double m = static_cast<double>(count) / n;
-  if (rays_ < 2) return {m, 0.0};
-  const double variance = std::fmax(0.0, m - m * m);  // E[x²] = E[x] for 0/1 scores
-  return {m, std::sqrt(variance / (n - 1.0))};
+void SkinTally::record(const SkinPath& path) {
+  PathScore score;
+  score.end = path.end;
+  score.exitDirection = path.exitDirection;
+  score.exitOffsetXCm = path.exitOffsetXCm;
+  score.exitOffsetYCm = path.exitOffsetYCm;
+  score.events = path.events;
+  const bool absorbed = path.end == PathEnd::Absorbed;
+  score.exitWeight = absorbed ? 0.0 : 1.0;
+  if (absorbed) {
+    score.absorbed = 1.0;
+    score.absorbedByLayer[index(path.layer)] = 1.0;
+    score.absorbedInMelanosomes = path.absorbedInMelanosome ? 1.0 : 0.0;
+  }
+  record(score);
 }
 
-void SkinTally::record(const SkinPath& path) {
-  const bool surface = path.end == PathEnd::SurfaceReflection;
-  const bool subsurface = path.end == PathEnd::SubsurfaceReflection;
-  const bool transmitted = path.end == PathEnd::Transmitted;
-  const bool absorbed = path.end == PathEnd::Absorbed;
-  ++rays_;
-  surface_ += surface;
-  subsurface_ += subsurface;
-  transmitted_ += transmitted;
-  absorbed_ += absorbed;
-  melanosomeAbsorbed_ += absorbed && path.absorbedInMelanosome;
-  eventLimited_ += path.end == PathEnd::EventLimit;
-  events_ += path.events;
-  if (absorbed) ++absorbedByLayer_[index(path.layer)];
+void SkinTally::record(const PathScore& score) {
+  const double w = score.exitWeight;
+  const bool surface = score.end == PathEnd::SurfaceReflection;
+  const bool subsurface = score.end == PathEnd::SubsurfaceReflection;
+  const bool transmitted = score.end == PathEnd::Transmitted;
+  const double sw = score.surfaceWeight;
+  total_.add((surface || subsurface ? w : 0.0) + sw);
+  surface_.add((surface ? w : 0.0) + sw);
+  subsurface_.add(subsurface ? w : 0.0);
+  transmitted_.add(transmitted ? w : 0.0);
+  eventLimited_.add(score.end == PathEnd::EventLimit ? w : 0.0);
+  for (std::size_t i = 0; i < kLayerCount; ++i) absorbedByLayer_[i].add(score.absorbedByLayer[i]);
+  absorbed_.add(score.absorbed);
+  melanosomeAbsorbed_.add(score.absorbedInMelanosomes);
+  events_ += score.events;
   if (surfaceDirections_) {
     surfaceDirections_->countPacket();
     subsurfaceDirections_->countPacket();
     transmittedDirections_->countPacket();
-    if (surface) surfaceDirections_->addToBin(directionBin(path.exitDirection), 1.0);
-    if (subsurface) subsurfaceDirections_->addToBin(directionBin(path.exitDirection), 1.0);
-    if (transmitted) transmittedDirections_->addToBin(directionBin(path.exitDirection), 1.0);
+    if (surface) surfaceDirections_->addToBin(directionBin(score.exitDirection), w);
+    if (sw != 0) surfaceDirections_->addToBin(directionBin(score.surfaceDirection), sw);
+    if (subsurface) subsurfaceDirections_->addToBin(directionBin(score.exitDirection), w);
+    if (transmitted) transmittedDirections_->addToBin(directionBin(score.exitDirection), w);
   }
   if (radialExits_) {
     radialExits_->countPacket();
-    if (subsurface) radialExits_->add(std::hypot(path.exitOffsetXCm, path.exitOffsetYCm), 1.0);
+    if (subsurface) radialExits_->add(std::hypot(score.exitOffsetXCm, score.exitOffsetYCm), w);
   }
 }
 
 void SkinTally::merge(const SkinTally& other) {
-  rays_ += other.rays_;
-  surface_ += other.surface_;
-  subsurface_ += other.subsurface_;
-  transmitted_ += other.transmitted_;
-  absorbed_ += other.absorbed_;
-  melanosomeAbsorbed_ += other.melanosomeAbsorbed_;
-  eventLimited_ += other.eventLimited_;
+  for (auto [mine, theirs] : {std::pair{&total_, &other.total_}, {&surface_, &other.surface_},
+                              {&subsurface_, &other.subsurface_}, {&transmitted_, &other.transmitted_},
+                              {&absorbed_, &other.absorbed_}, {&melanosomeAbsorbed_, &other.melanosomeAbsorbed_},
+                              {&eventLimited_, &other.eventLimited_}})
+    mine->merge(*theirs);
+  for (std::size_t i = 0; i < kLayerCount; ++i) absorbedByLayer_[i].merge(other.absorbedByLayer_[i]);
   events_ += other.events_;
-  for (std::size_t i = 0; i < kLayerCount; ++i) absorbedByLayer_[i] += other.absorbedByLayer_[i];
   if (surfaceDirections_) {
     surfaceDirections_->merge(*other.surfaceDirections_);
     subsurfaceDirections_->merge(*other.subsurfaceDirections_);

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include "skin/layer.h"
@@ -22,25 +23,43 @@ struct TallyOptions {
   double maxRadiusCm = 0.5;
 };
 
+/// One path's scores for one wavelength: the analog walk's 0/1 outcomes, or a spectral walk's
+/// weights (skin/spectral_walk.h). exitWeight leaves along exitDirection at the exit offset.
+struct PathScore {
+  PathEnd end = PathEnd::EventLimit;
+  Vec3 exitDirection;
+  double exitOffsetXCm = 0, exitOffsetYCm = 0;
+  double exitWeight = 0;                          ///< reflected, transmitted or event-limited
+  double surfaceWeight = 0;      ///< reflected at entry by a path that went on (expected value)
+  Vec3 surfaceDirection;
+  double absorbed = 0;                            ///< total absorbed (all layers)
+  std::array<double, kLayerCount> absorbedByLayer{};  ///< per layer (zeros when not booked)
+  double absorbedInMelanosomes = 0;
+  std::uint32_t events = 0;
+};
+
 class SkinTally {
  public:
   explicit SkinTally(const TallyOptions& options = {});
-
+  /// An analog path: weight 1 to its one outcome.
   void record(const SkinPath& path);
+  /// A weighted path (every quantity scores, zeros included; standard errors from the scores).
+  void record(const PathScore& score);
   void merge(const SkinTally& other);
 
-  std::uint64_t rays() const { return rays_; }
-  Estimate reflectance() const { return binomial(surface_ + subsurface_); }
-  Estimate surfaceReflectance() const { return binomial(surface_); }
-  Estimate subsurfaceReflectance() const { return binomial(subsurface_); }
-  Estimate transmittance() const { return binomial(transmitted_); }
-  Estimate absorptance() const { return binomial(absorbed_); }
-  Estimate absorptance(Layer layer) const { return binomial(absorbedByLayer_[index(layer)]); }
-  Estimate melanosomeAbsorptance() const { return binomial(melanosomeAbsorbed_); }
+  std::uint64_t rays() const { return total_.count(); }
+  Estimate reflectance() const { return total_.estimate(); }
+  Estimate surfaceReflectance() const { return surface_.estimate(); }
+  Estimate subsurfaceReflectance() const { return subsurface_.estimate(); }
+  Estimate transmittance() const { return transmitted_.estimate(); }
+  Estimate absorptance() const { return absorbed_.estimate(); }
+  Estimate absorptance(Layer layer) const { return absorbedByLayer_[index(layer)].estimate(); }
+  Estimate melanosomeAbsorptance() const { return melanosomeAbsorbed_.estimate(); }
   /// Rays that hit SkinWalk::kMaxEvents (reported, never folded into another quantity).
-  Estimate eventLimited() const { return binomial(eventLimited_); }
-  double meanEvents() const { return rays_ == 0 ? 0.0 : static_cast<double>(events_) / static_cast<double>(rays_); }
-
+  Estimate eventLimited() const { return eventLimited_.estimate(); }
+  double meanEvents() const {
+    return rays() == 0 ? 0.0 : static_cast<double>(events_) / static_cast<double>(rays());
+  }
   const TallyOptions& options() const { return options_; }
   /// Fraction of rays per direction bin (flattened: polar-major), for surface or subsurface exits.
   const std::optional<Histogram>& surfaceDirections() const { return surfaceDirections_; }
@@ -54,15 +73,12 @@ class SkinTally {
   std::size_t directionBin(const Vec3& exitDirection) const;
 
  private:
-  /// Mean and standard error of a 0/1 score that was 1 for `count` of the rays: the
-  /// RunningStatistic formula sqrt((E[x²] − E[x]²)/(N − 1)) with E[x²] = E[x] = count/N.
-  Estimate binomial(std::uint64_t count) const;
-
   TallyOptions options_;
-  // Each ray ends one way, so the outcomes are integer counts (exact, order-free merging).
-  std::uint64_t rays_ = 0, surface_ = 0, subsurface_ = 0, transmitted_ = 0, absorbed_ = 0,
-                melanosomeAbsorbed_ = 0, eventLimited_ = 0, events_ = 0;
-  std::array<std::uint64_t, kLayerCount> absorbedByLayer_{};
+  // Per-path scores (0/1 for analog paths: sums of 1.0 are exact, so merging stays order-free).
+  RunningStatistic total_, surface_, subsurface_, transmitted_, absorbed_, melanosomeAbsorbed_,
+      eventLimited_;
+  std::array<RunningStatistic, kLayerCount> absorbedByLayer_{};
+  std::uint64_t events_ = 0;
   std::optional<Histogram> surfaceDirections_, subsurfaceDirections_, transmittedDirections_, radialExits_;
 };
 

@@ -60,6 +60,9 @@ struct WalkOptions {
   /// Fast path (issue 5): a melanosome's absorption is drawn from its tabulated probability
   /// (skin/melanosome_path_lengths.h) instead of tracing the ray inside it.
   bool tabulatedMelanosomes = false;
+  /// Spectral walk (skin/spectral_walk.h) only: book the absorbed weight per layer (one exp per
+  /// layer stay and wavelength); without it only the total absorptance (1 − R − T) is scored.
+  bool layerAbsorption = true;
 };
 
 /// Distance travelled in each layer by one ray (cm), indexed by index(Layer); filled on request

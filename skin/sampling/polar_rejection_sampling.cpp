@@ -21,7 +21,7 @@ PolarCosSin sampleExponentialPolarCosSin(double meanAngleRad, Rng& rng) {
                                 std::to_string(meanAngleRad) + " rad must be 0 or in [1e-300, 1e6]");
   if (meanAngleRad > kLargestRejectionMeanAngleRad) {
     const double theta = sampleExponentialPolar(meanAngleRad, rng.uniform());
-    return {std::cos(theta), std::sin(theta)};
+    return {std::cos(theta), std::sin(theta), theta};
   }
   for (;;) {
     // Gamma(2, θo): the sum of two exponentials; 1 − u lies in (0, 1], so the log is finite.
@@ -30,7 +30,7 @@ PolarCosSin sampleExponentialPolarCosSin(double meanAngleRad, Rng& rng) {
     if (!(theta <= kPi)) continue;
     const double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
     const double u3 = rng.uniform();
-    if (u3 * theta <= sinTheta) return {cosTheta, sinTheta};  // accept with probability sinθ/θ
+    if (u3 * theta <= sinTheta) return {cosTheta, sinTheta, theta};  // accept with probability sinθ/θ
   }
 }
 

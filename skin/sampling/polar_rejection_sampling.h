@@ -28,6 +28,7 @@ namespace hylios::skin {
 struct PolarCosSin {
   double cosTheta = 1;
   double sinTheta = 0;
+  double thetaRad = 0;  ///< θ itself (filled by sampleExponentialPolarCosSin only)
 };
 
 /// A point uniform in the unit disk, with its squared radius (< 1).

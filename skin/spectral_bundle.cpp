@@ -1,0 +1,63 @@
+#include "skin/spectral_bundle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace hylios::skin {
+namespace {
+/// The Rayleigh optical depth of the stack at normal incidence (what one pass sees).
+double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk) {
+  if (!walk.rayleigh) return 0;
+  double depth = 0;
+  for (Layer layer : kAllLayers)
+    if (index(layer) <= index(walk.deepestLayer))
+      depth += optics[layer].muRayleigh_perCm * optics[layer].thicknessCm;
+  return depth;
+}
+
+struct Range {
+  double lowest = 0, highest = 0;
+  void reset(double x) { lowest = highest = x; }
+  Range with(double x) const { return {std::min(lowest, x), std::max(highest, x)}; }
+  double logSpread() const { return lowest > 0 ? std::log(highest / lowest) : (highest > 0 ? INFINITY : 0.0); }
+};
+}  // namespace
+
+std::vector<std::vector<std::size_t>> groupIntoBundles(const std::vector<SkinOptics>& optics,
+                                                       const WalkOptions& walk, const BundleRule& rule) {
+  if (rule.maxWavelengths == 0) throw std::invalid_argument("bundle rule: at most 0 wavelengths per bundle");
+  std::vector<std::size_t> order(optics.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return optics[a].wavelengthNm < optics[b].wavelengthNm;
+  });
+  std::vector<std::vector<std::size_t>> bundles;
+  Range angle, rayleigh;
+  double surfaceIndex = 0;
+  for (std::size_t i : order) {
+    const SkinOptics& o = optics[i];
+    const double theta = walk.melanosomes ? o.meanScatteringAngleRad : 0.0;
+    const double tau = rayleighDepth(o, walk);
+    const double n = o[Layer::StratumCorneum].refractiveIndex;
+    bool fits = !bundles.empty() && bundles.back().size() < rule.maxWavelengths;
+    if (fits) {
+      const Range a = angle.with(theta), r = rayleigh.with(tau);
+      fits = (a.lowest == 0) == (a.highest == 0) && a.logSpread() <= rule.maxLogAngleSpread &&
+             std::min(r.logSpread(), r.highest - r.lowest) <= rule.maxRayleighSpread &&
+             (walk.roughSurface || n == surfaceIndex);
+      if (fits) angle = a, rayleigh = r;
+    }
+    if (!fits) {
+      bundles.emplace_back();
+      angle.reset(theta);
+      rayleigh.reset(tau);
+      surfaceIndex = n;
+    }
+    bundles.back().push_back(i);
+  }
+  return bundles;
+}
+
+}  // namespace hylios::skin

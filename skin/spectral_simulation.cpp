@@ -1,0 +1,94 @@
+#include "skin/spectral_simulation.h"
+
+#include <tbb/parallel_for.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "skin/spectral_walk.h"
+
+namespace hylios::skin {
+namespace {
+constexpr std::uint64_t kPathsPerChunk = 1024;
+
+struct Chunk {
+  std::size_t bundle;
+  std::uint64_t first, last;
+};
+
+/// Records one spectral path into the tallies of its bundle's wavelengths.
+void recordPath(const SpectralPath& path, std::vector<SkinTally*>& tallies) {
+  PathScore score;
+  score.end = path.end;
+  score.exitDirection = path.exitDirection;
+  score.exitOffsetXCm = path.exitOffsetXCm;
+  score.exitOffsetYCm = path.exitOffsetYCm;
+  score.events = path.events;
+  const bool perWavelengthDirection = path.end == PathEnd::Transmitted && !path.transmittedDirection.empty();
+  for (std::size_t i = 0; i < tallies.size(); ++i) {
+    score.exitWeight = path.exitWeight[i];
+    score.surfaceWeight = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i];
+    score.surfaceDirection = path.surfaceDirection;
+    score.absorbed = path.absorbedTotal[i];
+    if (!path.absorbed.empty()) {
+      score.absorbedByLayer = path.absorbed[i];
+      score.absorbedInMelanosomes = path.absorbedInMelanosomes[i];
+    }
+    if (perWavelengthDirection) score.exitDirection = path.transmittedDirection[i];
+    tallies[i]->record(score);
+  }
+}
+}  // namespace
+
+std::uint64_t bundleStream(const std::vector<double>& wavelengthsNm) {
+  std::uint64_t stream = 0x6a09e667f3bcc909ULL;
+  for (double w : wavelengthsNm) stream = mix64(stream ^ wavelengthStream(w));
+  return stream;
+}
+
+std::vector<SkinTally> simulateSkinSpectral(const std::vector<SkinOptics>& optics,
+                                            const SpectralRunOptions& options) {
+  if (!(options.incidenceDeg >= 0 && options.incidenceDeg < 90))
+    throw std::invalid_argument("incidence angle " + std::to_string(options.incidenceDeg) +
+                                "° is outside [0°, 90°)");
+  if (options.rays == 0) throw std::invalid_argument("the number of rays must be positive");
+  const auto bundles = groupIntoBundles(optics, options.walk, options.bundles);
+  std::vector<SpectralWalk> walks;
+  std::vector<std::uint64_t> streams;
+  std::vector<Chunk> chunks;
+  for (std::size_t b = 0; b < bundles.size(); ++b) {
+    std::vector<SkinOptics> members;
+    std::vector<double> wavelengths;
+    for (std::size_t i : bundles[b]) {
+      members.push_back(optics[i]);
+      wavelengths.push_back(optics[i].wavelengthNm);
+    }
+    walks.emplace_back(members, options.walk);
+    streams.push_back(bundleStream(wavelengths));
+    for (std::uint64_t first = 0; first < options.rays; first += kPathsPerChunk)
+      chunks.push_back({b, first, std::min(options.rays, first + kPathsPerChunk)});
+  }
+  const Vec3 incident = incidentDirection(options.incidenceDeg);
+  std::vector<std::vector<SkinTally>> chunkTallies(chunks.size());
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    const Chunk& chunk = chunks[c];
+    std::vector<SkinTally>& tallies = chunkTallies[c];
+    tallies.assign(bundles[chunk.bundle].size(), SkinTally(options.tally));
+    std::vector<SkinTally*> pointers;
+    for (SkinTally& t : tallies) pointers.push_back(&t);
+    SpectralPath path;
+    for (std::uint64_t ray = chunk.first; ray < chunk.last; ++ray) {
+      Rng rng(options.seed, streams[chunk.bundle], ray);
+      walks[chunk.bundle].trace(incident, rng, path);
+      recordPath(path, pointers);
+    }
+  });
+  std::vector<SkinTally> result(optics.size(), SkinTally(options.tally));
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    const auto& members = bundles[chunks[c].bundle];
+    for (std::size_t k = 0; k < members.size(); ++k) result[members[k]].merge(chunkTallies[c][k]);
+  }
+  return result;
+}
+
+}  // namespace hylios::skin

@@ -1,0 +1,442 @@
+#include "skin/spectral_walk.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "skin/fresnel.h"
+#include "skin/interface_crossing.h"
+#include "skin/melanosome_interaction.h"
+#include "skin/rough_surface.h"
+#include "skin/sampling/rayleigh_sampling.h"
+
+namespace hylios::skin {
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// Redraws of a facet normal that faces away from the ray (as RoughSurface::facingNormal).
+constexpr int kMaxFacetRedraws = 16;
+/// Relative tolerance on index ratios that must be equal across the bundle (rounding only).
+constexpr double kRatioTolerance = 1e-9;
+
+double sampleFreePathCm(double mu_perCm, Rng& rng) {
+  return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) / mu_perCm : kInfinity;
+}
+
+bool sameRatio(double a, double b) { return std::fabs(a - b) <= kRatioTolerance * std::fabs(b); }
+
+void requireShared(bool same, const std::string& what) {
+  if (!same)
+    throw std::invalid_argument("spectral walk: the wavelengths of a bundle must share " + what);
+}
+
+/// log p(θ)·e^{θ/θo}/sinθ of Algorithm 2's law: p(θ) = e^{−θ/θo} sinθ (1 + θo²)/(θo²(1 + e^{−π/θo})).
+double logAngleNormalisation(double meanAngleRad) {
+  if (meanAngleRad == 0) return 0;
+  const double t2 = meanAngleRad * meanAngleRad;
+  return std::log1p(t2) - std::log(t2) - std::log1p(std::exp(-3.14159265358979323846 / meanAngleRad));
+}
+
+std::string layerText(Layer layer) { return std::string(layerName(layer)); }
+}  // namespace
+
+/// The walk's state for one path (the per-λ arrays live in the SpectralPath, reused across paths).
+class SpectralWalk::State {
+ public:
+  State(SpectralPath& p, std::size_t n, bool layers) : path(p), ratio(p.scratch), stays(p.stays) {
+    path.exitWeight.assign(n, 0.0);
+    path.absorbedTotal.assign(n, 0.0);
+    path.absorbed.assign(layers ? n : 0, {});
+    path.absorbedInMelanosomes.assign(layers ? n : 0, 0.0);
+    path.transmittedDirection.clear();
+    path.surfaceWeight.clear();
+    stays.clear();
+    logDensity.assign(n, 0.0);
+  }
+  SpectralPath& path;
+  std::vector<double>& ratio;            ///< scratch for MIS ratios
+  std::vector<SpectralPath::Stay>& stays;  ///< the stays so far (per-layer absorption only)
+  Vec3 position{0, 0, 0};
+  Vec3 direction;
+  std::size_t slab = 0;
+  std::size_t hero = 0;
+  bool rayleighAvailable = true;
+  double roulette = 1;  ///< product of 1/P over the roulettes survived
+  double stayCm = 0, stayMelaninCm = 0;  ///< path in the current slab since the stay began
+  std::array<double, kLayerCount> pathCm{};      ///< by slab: path travelled there (λ-free)
+  std::array<double, kLayerCount> melaninCm{};   ///< by slab: path inside melanin (λ-free)
+  std::vector<double> logDensity;        ///< per λ: log p_λ(path) up to a common factor
+
+  /// Per λ: p_λ / mean_j p_j (1 for a single wavelength), into `out`.
+  void misRatios(std::vector<double>& out) const {
+    const std::size_t n = logDensity.size();
+    out.assign(n, 1.0);
+    if (n == 1) return;
+    const double top = *std::max_element(logDensity.begin(), logDensity.end());
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) sum += out[i] = std::exp(logDensity[i] - top);
+    const double scale = static_cast<double>(n) / sum;
+    for (double& r : out) r *= scale;
+  }
+};
+
+SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions options)
+    : options_(options), wavelengthCount_(bundle.size()) {
+  if (bundle.empty()) throw std::invalid_argument("spectral walk: the bundle has no wavelength");
+  const SkinWalk reference(bundle.front(), options);  // the same checks as the analog walk
+  const SkinOptics& first = bundle.front();
+  double depthCm = 0;
+  for (Layer layer : kAllLayers) {
+    if (index(layer) > index(options.deepestLayer)) break;
+    const LayerOptics& lo = first[layer];
+    if (!(lo.thicknessCm > 0)) continue;
+    Slab slab{layer, depthCm, depthCm + lo.thicknessCm, lo.refractiveIndex,
+              options.melanosomes ? lo.melanosome.mu_perCm : 0.0, false, {}, {}, {}, 0.0};
+    for (const SkinOptics& o : bundle) {
+      requireShared(o[layer].thicknessCm == lo.thicknessCm, "the thickness of " + layerText(layer));
+      requireShared(o[layer].melanosome.mu_perCm == lo.melanosome.mu_perCm &&
+                        o[layer].melanosome.semiMinorAxisCm == lo.melanosome.semiMinorAxisCm &&
+                        o[layer].melanosome.semiMajorAxisCm == lo.melanosome.semiMajorAxisCm &&
+                        o[layer].melanosome.melanosomesPerComplex == lo.melanosome.melanosomesPerComplex,
+                    "the melanosomes of " + layerText(layer));
+      requireShared(sameRatio(o[layer].refractiveIndex / o[Layer::StratumCorneum].refractiveIndex,
+                              lo.refractiveIndex / first[Layer::StratumCorneum].refractiveIndex) &&
+                        sameRatio(o.melaninRefractiveIndex / o[layer].refractiveIndex,
+                                  first.melaninRefractiveIndex / lo.refractiveIndex),
+                    "the index ratios of " + layerText(layer) + " (indices dispersed by one factor)");
+      slab.muA_perCm.push_back(lo.thicknessCm > 0 ? o[layer].muATotal_perCm : 0.0);
+      const double rayleigh = options.rayleigh ? o[layer].muRayleigh_perCm : 0.0;
+      slab.muRayleigh_perCm.push_back(rayleigh);
+      slab.hasRayleigh = slab.hasRayleigh || rayleigh > 0;
+    }
+    if (!slab.hasRayleigh) slab.muRayleigh_perCm.clear();
+    for (double mu : slab.muRayleigh_perCm) slab.logRayleigh.push_back(std::log(mu));
+    slab.leastMuA_perCm = *std::min_element(slab.muA_perCm.begin(), slab.muA_perCm.end());
+    std::optional<Melanosomes> shape;
+    if (slab.muMelanosome_perCm > 0) {
+      const MelanosomeLayer checked(first, layer);  // validates the geometry and θo
+      const MelanosomeOptics& m = lo.melanosome;
+      Melanosomes s;
+      s.geometry.aspect = m.semiMajorAxisCm / m.semiMinorAxisCm;
+      s.geometry.inverseAspect = m.semiMinorAxisCm / m.semiMajorAxisCm;
+      s.geometry.entering = FresnelPair(lo.refractiveIndex, first.melaninRefractiveIndex);
+      s.geometry.leaving = FresnelPair(first.melaninRefractiveIndex, lo.refractiveIndex);
+      s.semiMinorAxisCm = m.semiMinorAxisCm;
+      s.inComplexes = m.inComplexes;
+      if (m.inComplexes) {
+        s.wholeCount = static_cast<unsigned>(std::floor(m.melanosomesPerComplex));
+        s.fractionalCount = m.melanosomesPerComplex - std::floor(m.melanosomesPerComplex);
+      }
+      if (options.tabulatedMelanosomes)
+        s.table = MelanosomePathLengths::shared(
+            melanosomeTableKey(s.geometry.aspect),
+            melanosomeTableKey(first.melaninRefractiveIndex / lo.refractiveIndex),
+            kSpectralMelanosomeTableSamples);
+      shape = s;
+    }
+    melanosomes_.push_back(shape);
+    slabs_.push_back(std::move(slab));
+    depthCm += lo.thicknessCm;
+  }
+  for (const SkinOptics& o : bundle) {
+    requireShared(o.surfaceAspectRatio == first.surfaceAspectRatio, "the surface fold aspect ratio");
+    requireShared((o.meanScatteringAngleRad == 0) == (first.meanScatteringAngleRad == 0),
+                  "θo = 0 or θo > 0 (Algorithm 2's law is a point mass at θo = 0)");
+    melaninMuA_perCm_.push_back(o.melanosomeInteriorMuA_perCm);
+    meanAngleRad_.push_back(o.meanScatteringAngleRad);
+    logAngleNormalisation_.push_back(logAngleNormalisation(o.meanScatteringAngleRad));
+    anglesDiffer_ = anglesDiffer_ || o.meanScatteringAngleRad != first.meanScatteringAngleRad;
+    surfaceIndex_.push_back(o[slabs_.front().layer].refractiveIndex);
+    bottomIndex_.push_back(o[slabs_.back().layer].refractiveIndex);
+    surfaceIndicesDiffer_ = surfaceIndicesDiffer_ || surfaceIndex_.back() != surfaceIndex_.front();
+  }
+  smallestSurfaceIndex_ = *std::min_element(surfaceIndex_.begin(), surfaceIndex_.end());
+  leastMelaninMuA_perCm_ = *std::min_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
+  requireShared(options.roughSurface || !surfaceIndicesDiffer_,
+                "one surface index when the surface is smooth (a dispersive smooth interface "
+                "refracts each wavelength elsewhere: split the bundle)");
+  if (options.roughSurface) {
+    facetPolar_.emplace(first.surfaceAspectRatio);
+    aspectSquared_ = first.surfaceAspectRatio * first.surfaceAspectRatio;
+  }
+}
+
+void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path) const {
+  State s(path, wavelengthCount_, options_.layerAbsorption);
+  path.events = 1;
+  path.exitOffsetXCm = path.exitOffsetYCm = 0;
+  s.hero = wavelengthCount_ == 1
+               ? 0
+               : std::min(wavelengthCount_ - 1,
+                          static_cast<std::size_t>(rng.uniform() * static_cast<double>(wavelengthCount_)));
+  s.direction = incidentDirection;
+  if (crossSurface(s, false, rng)) return traceEntered(s, rng);
+  path.end = PathEnd::SurfaceReflection;
+  path.exitDirection = s.direction;
+  s.misRatios(path.exitWeight);
+}
+
+void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
+  const Melanosomes& m = *melanosomes_[k];
+  const unsigned count = m.inComplexes ? m.wholeCount + (rng.uniform() < m.fractionalCount ? 1u : 0u) : 1u;
+  double chordsOverA = 0;
+  for (unsigned i = 0; i < count; ++i) {
+    if (m.table) {
+      const std::vector<double>& lengths = m.table->pathLengths();
+      const auto pick = static_cast<std::size_t>(rng.uniform() * static_cast<double>(lengths.size()));
+      chordsOverA += lengths[std::min(pick, lengths.size() - 1)];
+    } else {
+      walkInsideMelanosome(m.geometry, rng, [&chordsOverA](double chord) {
+        chordsOverA += chord;
+        return false;  // absorption is a weight: the internal path always runs to its end
+      });
+    }
+  }
+  s.stayMelaninCm += chordsOverA * m.semiMinorAxisCm;
+  const PolarCosSin theta = sampleExponentialPolarCosSin(meanAngleRad_[s.hero], rng);  // Algorithm 2
+  if (anglesDiffer_) {
+    const double angle = theta.thetaRad;
+    for (std::size_t i = 0; i < wavelengthCount_; ++i)
+      s.logDensity[i] += logAngleNormalisation_[i] - angle / meanAngleRad_[i];
+  }
+  const Azimuth phi = sampleAzimuth(rng);
+  s.direction = directionAbout(s.direction, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
+}
+
+bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta,
+                              bool fromInside, Rng& rng) const {
+  const double nFromH = fromInside ? surfaceIndex_[s.hero] : 1.0;
+  const double nToH = fromInside ? 1.0 : surfaceIndex_[s.hero];
+  const Vec3 d = s.direction;
+  const double cosI = dot(d, m);
+  const FresnelResult hero = fresnel(cosI, nFromH, nToH);
+  const bool reflect = nFromH != nToH && (hero.reflectance >= 1.0 || rng.uniform() < hero.reflectance);
+  auto indices = [&](std::size_t i) {
+    return fromInside ? std::pair{surfaceIndex_[i], 1.0} : std::pair{1.0, surfaceIndex_[i]};
+  };
+  if (reflect) {
+    s.direction = reflectDirection(d, m);
+    // From inside beyond the critical angle of the smallest index, every λ reflects totally.
+    const bool totalForAll = fromInside && 1.0 - cosI * cosI >= 1.0 / (smallestSurfaceIndex_ * smallestSurfaceIndex_);
+    if (surfaceIndicesDiffer_ && !totalForAll)
+      for (std::size_t i = 0; i < wavelengthCount_; ++i) {
+        const auto [n1, n2] = indices(i);
+        s.logDensity[i] += std::log(fresnelReflectance(cosI, n1, n2));
+      }
+    return false;
+  }
+  const Vec3 t = refractDirection(d, m, nFromH, nToH, hero.cosTransmitted);
+  s.direction = t;
+  if (!surfaceIndicesDiffer_) return true;
+  for (std::size_t i = 0; i < wavelengthCount_; ++i) {
+    const auto [n1, n2] = indices(i);
+    double& logDensity = s.logDensity[i];
+    if (delta) {  // a point mass: only wavelengths that refract to the same direction share it
+      logDensity = n2 == nToH && n1 == nFromH ? logDensity + std::log1p(-fresnelReflectance(cosI, n1, n2))
+                                              : -kInfinity;
+      continue;
+    }
+    // The facet that refracts d into t for these indices: the generalised half vector n1·d − n2·t.
+    Vec3 h = d * n1 - t * n2;
+    const double length = std::sqrt(dot(h, h));
+    if (!(length > 0)) {
+      logDensity = -kInfinity;
+      continue;
+    }
+    h = h * (1.0 / length);
+    if (dot(d, h) > 0) h = h * -1.0;
+    const double cosD = dot(d, h), cosT = dot(t, h);
+    const double cosFacet = dot(h, macro);  // the facet's polar angle about the macro normal
+    const FresnelResult f = fresnel(cosD, n1, n2);
+    if (!(cosT < 0 && cosFacet > 0) || f.reflectance >= 1.0) {
+      logDensity = -kInfinity;
+      continue;
+    }
+    const double sin2 = (1.0 - cosFacet) * (1.0 + cosFacet);
+    const double facetDensity = aspectSquared_ * cosFacet * cosFacet + sin2;  // D ∝ this⁻²
+    const double jacobianDenominator = n1 * cosD - n2 * cosT;
+    logDensity += -2.0 * std::log(facetDensity) + std::log1p(-f.reflectance) +
+                  std::log(n2 * n2 * std::fabs(cosT)) - 2.0 * std::log(std::fabs(jacobianDenominator));
+  }
+  return true;
+}
+
+bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng) const {
+  const double towardFar = s.direction.z > 0 ? 1.0 : -1.0;
+  bool onFarSide = false;
+  for (int attempt = 0; attempt <= kMaxSurfaceBounces; ++attempt) {
+    const double headingSign = onFarSide ? -towardFar : towardFar;
+    const Vec3 macroNormal{0, 0, -headingSign};
+    bool delta = !options_.roughSurface || attempt == kMaxSurfaceBounces;
+    Vec3 m = macroNormal;
+    if (!delta) {
+      delta = true;
+      for (int redraw = 0; redraw < kMaxFacetRedraws && delta; ++redraw) {
+        const PolarCosSin theta = facetPolar_->sample(rng);
+        const Azimuth phi = sampleAzimuth(rng);
+        const Vec3 candidate =
+            directionAbout(macroNormal, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
+        if (dot(s.direction, candidate) < 0) {
+          m = candidate;
+          delta = false;
+        }
+      }
+    }
+    const bool inSkin = fromInside != onFarSide;
+    const bool transmitted = crossFacet(s, m, macroNormal, delta, inSkin, rng);
+    if (transmitted) onFarSide = !onFarSide;
+    const double awaySign = onFarSide ? towardFar : -towardFar;
+    if (s.direction.z * awaySign > 0) return onFarSide;
+    if (!options_.roughSurface) break;
+  }
+  s.direction.z = std::fabs(s.direction.z) * (onFarSide ? towardFar : -towardFar);
+  return onFarSide;
+}
+
+void SpectralWalk::endStay(State& s) const {
+  s.pathCm[s.slab] += s.stayCm;
+  s.melaninCm[s.slab] += s.stayMelaninCm;
+  if (options_.layerAbsorption && (s.stayCm > 0 || s.stayMelaninCm > 0))
+    s.stays.push_back({s.slab, s.stayCm, s.stayMelaninCm, s.roulette});
+  s.stayCm = s.stayMelaninCm = 0;
+}
+
+bool SpectralWalk::survivesRoulette(State& s, Rng& rng) const {
+  // The transmittance of the least absorbed λ bounds every λ's (the MIS ratio is left out:
+  // any survival probability that depends only on the path so far keeps the walk unbiased).
+  double depth = 0;
+  for (std::size_t k = 0; k < slabs_.size(); ++k)
+    depth += slabs_[k].leastMuA_perCm * s.pathCm[k] + leastMelaninMuA_perCm_ * s.melaninCm[k];
+  const double largest = s.roulette * std::exp(-depth);
+  if (largest >= kSpectralRouletteWeight) return true;
+  const double survival = largest / kSpectralRouletteWeight;
+  if (survival > 0 && rng.uniform() < survival) {
+    s.roulette /= survival;
+    return true;
+  }
+  finish(s, PathEnd::Absorbed, false);
+  return false;
+}
+
+void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
+  endStay(s);
+  SpectralPath& path = s.path;
+  path.end = end;
+  path.exitOffsetXCm = s.position.x;
+  path.exitOffsetYCm = s.position.y;
+  std::vector<double>& ratio = s.ratio;
+  s.misRatios(ratio);
+  for (std::size_t i = 0; i < wavelengthCount_; ++i) {
+    double depth = 0;
+    if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
+      double before = 1;
+      for (const SpectralPath::Stay& stay : s.stays) {
+        const double melaninDepth = melaninMuA_perCm_[i] * stay.melaninCm;
+        const double stayDepth = slabs_[stay.slab].muA_perCm[i] * stay.cm + melaninDepth;
+        depth += stayDepth;
+        const double after = std::exp(-depth);
+        const double lost = stay.roulette * (before - after) * ratio[i];
+        path.absorbed[i][index(slabs_[stay.slab].layer)] += lost;
+        if (stayDepth > 0) path.absorbedInMelanosomes[i] += lost * (melaninDepth / stayDepth);
+        before = after;
+      }
+    } else {
+      for (std::size_t k = 0; k < slabs_.size(); ++k)
+        depth += slabs_[k].muA_perCm[i] * s.pathCm[k] + melaninMuA_perCm_[i] * s.melaninCm[k];
+    }
+    path.exitWeight[i] = scores ? s.roulette * std::exp(-depth) * ratio[i] : 0.0;
+    const double surface = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i];
+    path.absorbedTotal[i] = ratio[i] - path.exitWeight[i] - surface;  // E = 1 − R − T
+  }
+}
+
+void SpectralWalk::traceEntered(State& s, Rng& rng) const {
+  SpectralPath& path = s.path;
+  const std::size_t slabCount = slabs_.size();
+  while (path.events < SkinWalk::kMaxEvents) {
+    ++path.events;
+    const Slab& slab = slabs_[s.slab];
+    Vec3& d = s.direction;
+    const bool rayleighHere = s.rayleighAvailable && slab.hasRayleigh;
+    const double muScatter = slab.muMelanosome_perCm + (rayleighHere ? slab.muRayleigh_perCm[s.hero] : 0.0);
+    const double toBoundaryCm = d.z > 0   ? (slab.bottomCm - s.position.z) / d.z
+                                : d.z < 0 ? (slab.topCm - s.position.z) / d.z
+                                          : kInfinity;
+    const double freePathCm = sampleFreePathCm(muScatter, rng);
+    const bool collides = freePathCm < toBoundaryCm;
+    const double flightCm = collides ? freePathCm : toBoundaryCm;
+    if (!std::isfinite(flightCm)) break;  // parallel to the layers with nothing to stop it
+    s.stayCm += flightCm;
+    s.position += d * flightCm;
+    const bool rayleighEvent = collides && rng.uniform() * muScatter >= slab.muMelanosome_perCm;
+    if (rayleighHere && wavelengthCount_ > 1)
+      for (std::size_t i = 0; i < wavelengthCount_; ++i) {
+        s.logDensity[i] += -slab.muRayleigh_perCm[i] * flightCm + (rayleighEvent ? slab.logRayleigh[i] : 0.0);
+      }
+    if (collides) {
+      if (!rayleighEvent) {
+        meetMelanosomes(s, s.slab, rng);
+        continue;
+      }
+      const double cosR = sampleRayleighCos(rng.uniform());  // Algorithm 1's density
+      const double sinR = std::sqrt((1.0 - cosR) * (1.0 + cosR));
+      const Azimuth phi = sampleAzimuth(rng);
+      d = directionAbout(d, cosR, sinR, phi.cosPhi, phi.sinPhi);
+      s.rayleighAvailable = false;
+      continue;
+    }
+    s.position.z = d.z > 0 ? slab.bottomCm : slab.topCm;
+    if (d.z < 0 && s.slab == 0) {  // the skin surface, from inside
+      if (crossSurface(s, true, rng)) {
+        path.exitDirection = s.direction;
+        return finish(s, PathEnd::SubsurfaceReflection, true);
+      }
+      continue;
+    }
+    if (d.z > 0 && s.slab + 1 == slabCount) {
+      if (options_.deepestLayer == Layer::ReticularDermis) {  // dermis–hypodermis: diffuse, R = 1
+        const Vec3 local = sampleCosineHemisphereByDisk(rng);
+        d = Vec3{local.x, local.y, -local.z};
+        continue;
+      }
+      if (crossBottom(s, rng)) return finish(s, PathEnd::Transmitted, true);
+      continue;
+    }
+    const std::size_t next = d.z > 0 ? s.slab + 1 : s.slab - 1;
+    const InterfaceCrossing crossing =
+        crossPlaneInterfaceZ(d, slab.referenceIndex, slabs_[next].referenceIndex, rng);
+    d = crossing.direction;
+    if (crossing.transmitted) {  // a layer's stay ends, then roulette
+      endStay(s);
+      s.slab = next;
+      if (slabs_[next].layer == Layer::PapillaryDermis) s.rayleighAvailable = true;  // a new pass
+      if (!survivesRoulette(s, rng)) return;
+    }
+  }
+  finish(s, PathEnd::EventLimit, true);
+}
+
+bool SpectralWalk::crossBottom(State& s, Rng& rng) const {
+  const Vec3 d = s.direction;
+  const double nBelow = options_.belowRefractiveIndex;
+  const FresnelResult hero = fresnel(d.z, bottomIndex_[s.hero], nBelow);
+  const bool reflect = bottomIndex_[s.hero] != nBelow &&
+                       (hero.reflectance >= 1.0 || rng.uniform() < hero.reflectance);
+  if (reflect) s.direction = Vec3{d.x, d.y, -d.z};
+  std::vector<Vec3>& out = s.path.transmittedDirection;
+  if (!reflect) out.assign(wavelengthCount_, Vec3{});
+  for (std::size_t i = 0; i < wavelengthCount_; ++i) {
+    const FresnelResult f = fresnel(d.z, bottomIndex_[i], nBelow);
+    if (wavelengthCount_ > 1)
+      s.logDensity[i] += reflect ? std::log(f.reflectance) : std::log1p(-f.reflectance);
+    if (!reflect) {
+      const double ratio = bottomIndex_[i] / nBelow;
+      out[i] = Vec3{d.x * ratio, d.y * ratio, std::copysign(f.cosTransmitted, d.z)};
+    }
+  }
+  if (!reflect) s.direction = out[s.hero];
+  return !reflect;
+}
+
+}  // namespace hylios::skin

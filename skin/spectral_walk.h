@@ -1,0 +1,162 @@
+// The HyLIoS walk of one path for a bundle of wavelengths (issue 11): the geometry of a path is
+// shared, every wavelength carries its own weight, and for every λ the weight has exactly the
+// expectation of the per-wavelength analog walk (skin/skin_walk.h).
+//
+// What depends on λ, and how each dependence is carried (docs/interpretations.md, "Spectral walk"):
+// | dependence                         | treatment                                                   |
+// |------------------------------------|-------------------------------------------------------------|
+// | absorption by the layers (Eq. 3)   | weight exp(−μa(λ)·ℓ) per layer stay, never sampled          |
+// | melanin inside melanosomes         | the internal path (λ-free geometry) traced or drawn from the |
+// |                                    | path-length table; weight exp(−μa_mel(λ)·ℓ_melanin)         |
+// | Rayleigh (λ⁻⁴, once per pass)      | sampled with the hero's coefficient; path-density ratio     |
+// | Algorithm 2's θo(λ), 780–1400 nm   | sampled with the hero's θo; path-density ratio              |
+// | rough air–skin surface (n(λ))      | facet drawn once; reflection: Fresnel ratio; transmission:  |
+// |                                    | the hero's refracted direction, density of each λ through   |
+// |                                    | its own generalised half vector (Walter et al. 2007)        |
+// | smooth bottom into a fixed index   | Fresnel ratio; transmitted directions per λ (path ends)     |
+// | layer/layer and melanin/layer      | index ratios do not depend on λ (skin/layer_refractive_     |
+// | interfaces                         | index.h): shared exactly                                    |
+//
+// Hero-wavelength sampling (Wilkie et al. 2014) with the balance heuristic over the bundle: each
+// path draws its hero uniformly among the bundle's wavelengths and makes every λ-dependent choice
+// with the hero's law; wavelength λ's score is f_λ/((1/N)Σ_j p_j), i.e. its transmittance times
+// p_λ(path)/mean_j p_j(path). The mixture bounds that ratio by N whatever the bundle, and it is
+// exact in expectation for every λ. The walk tracks log p_λ relative to a common factor.
+// Russian roulette on the largest weight (checked at layer boundaries) ends paths unbiasedly.
+// Degenerate ratios (a delta whose position depends on λ: the redraw cap's macro normal with
+// different indices) give weight 0 to every λ whose delta lies elsewhere, which is still exact.
+// Bundles that would make the ratios wide (θo = 0 against θo > 0, very different Rayleigh depths)
+// are never formed: skin/spectral_bundle.h groups the wavelengths.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "skin/core/random.h"
+#include "skin/core/vector3.h"
+#include "skin/fresnel_pair.h"
+#include "skin/layer.h"
+#include "skin/melanosome_internal_walk.h"
+#include "skin/melanosome_path_lengths.h"
+#include "skin/sampling/polar_rejection_sampling.h"
+#include "skin/skin_optics.h"
+#include "skin/skin_walk.h"
+
+namespace hylios::skin {
+
+/// One spectral path's outcome: a shared end and geometry, a score per wavelength of the bundle.
+struct SpectralPath {
+  PathEnd end = PathEnd::EventLimit;  ///< Absorbed: ended by Russian roulette (scores 0)
+  Vec3 exitDirection;                 ///< shared exit direction (reflection; rough-surface exits)
+  double exitOffsetXCm = 0, exitOffsetYCm = 0;
+  std::uint32_t events = 0;
+  /// Per λ: the weight that leaves with the path (reflectance / transmittance score; for
+  /// EventLimit the weight still carried when the walk was stopped).
+  std::vector<double> exitWeight;
+  /// Per λ: transmitted directions through a smooth bottom (PathEnd::Transmitted only; depend on λ).
+  std::vector<Vec3> transmittedDirection;
+  /// Per λ: the weight reflected by the surface at entry while the path went on into the skin
+  /// (empty when the entry was sampled; then a surface reflection is end = SurfaceReflection).
+  std::vector<double> surfaceWeight;
+  Vec3 surfaceDirection;
+  /// Per λ: absorbed weight, estimated as MIS ratio − exits (exact in expectation: 1 − R − T).
+  std::vector<double> absorbedTotal;
+  /// Per λ and layer (WalkOptions::layerAbsorption): weight absorbed on the way, booked per stay
+  /// in a layer (layers' absorbers and melanosomes together; empty otherwise).
+  std::vector<std::array<double, kLayerCount>> absorbed;
+  /// Per λ: the part of `absorbed` taken by melanin inside melanosomes (share by optical depth).
+  std::vector<double> absorbedInMelanosomes;
+
+  /// The walk's workspace (kept to avoid allocations per path).
+  struct Stay {
+    std::size_t slab;
+    double cm, melaninCm, roulette;
+  };
+  std::vector<Stay> stays;
+  std::vector<double> scratch;
+};
+
+/// Tabulated melanosomes (WalkOptions::tabulatedMelanosomes): each melanosome met draws its internal
+/// path length from a table of this many traced paths (skin/melanosome_path_lengths.h), 4× the
+/// analog table's, so its sampling error (≈ 0.1 % of one melanosome's absorption) stays far below
+/// the noise of any curve.
+inline constexpr std::size_t kSpectralMelanosomeTableSamples = std::size_t{1} << 18;
+
+/// Russian roulette: below this largest weight a path survives with probability weight / it.
+inline constexpr double kSpectralRouletteWeight = 0.05;
+
+class SpectralWalk {
+ public:
+  /// `bundle` holds the optics of one specimen at each wavelength of the bundle (at least one).
+  /// Throws std::invalid_argument when the wavelengths cannot share a path: different thicknesses,
+  /// melanosome geometry, surface roughness or layer index ratios, θo zero for some but not all,
+  /// or a smooth surface (options.roughSurface false) with different surface indices; and for
+  /// everything SkinWalk rejects.
+  SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions options = {});
+
+  std::size_t size() const { return wavelengthCount_; }
+  const WalkOptions& options() const { return options_; }
+
+  /// Follows one path arriving from air along `incidentDirection` (z > 0); `path` is reused.
+  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path) const;
+
+ private:
+  struct Slab {
+    Layer layer;
+    double topCm, bottomCm;
+    double referenceIndex;             ///< the index at the first wavelength (ratios are λ-free)
+    double muMelanosome_perCm;         ///< Eq. 6 (λ-free)
+    bool hasRayleigh;                  ///< some λ has a Rayleigh coefficient here
+    std::vector<double> muA_perCm;     ///< per λ
+    std::vector<double> muRayleigh_perCm;  ///< per λ (empty without Rayleigh)
+    std::vector<double> logRayleigh;       ///< per λ: log muRayleigh_perCm
+    double leastMuA_perCm;                 ///< min over λ of muA_perCm
+  };
+  struct Melanosomes {  ///< a layer's melanosome shape (λ-free)
+    MelanosomeGeometry geometry;
+    double semiMinorAxisCm = 0;
+    bool inComplexes = false;
+    unsigned wholeCount = 1;
+    double fractionalCount = 0;
+    std::shared_ptr<const MelanosomePathLengths> table;  ///< tabulated mode
+  };
+  class State;
+
+  void traceEntered(State& s, Rng& rng) const;
+  /// The rough (or smooth) surface crossing of Sec. 4.3 from air (fromInside false) or from the
+  /// skin; returns whether the ray ended on the far side, updating s.direction and densities.
+  bool crossSurface(State& s, bool fromInside, Rng& rng) const;
+  /// One Fresnel test on facet m (the macro normal when `delta`); true when transmitted.
+  bool crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta, bool fromInside,
+                  Rng& rng) const;
+  /// The smooth bottom of a truncated stack into options.belowRefractiveIndex; true when through.
+  bool crossBottom(State& s, Rng& rng) const;
+  /// Ends the stay in the current slab: adds its path lengths (and records it for layer absorption).
+  void endStay(State& s) const;
+  /// Russian roulette on the largest weight; false when the path was ended.
+  bool survivesRoulette(State& s, Rng& rng) const;
+  /// Ends the path: `end`, scores = roulette × transmittance × MIS ratio (0 when `scores` false).
+  void finish(State& s, PathEnd end, bool scores) const;
+  void meetMelanosomes(State& s, std::size_t k, Rng& rng) const;
+
+  WalkOptions options_;
+  std::size_t wavelengthCount_ = 0;
+  std::vector<Slab> slabs_;
+  std::vector<std::optional<Melanosomes>> melanosomes_;  ///< by slab
+  std::vector<double> melaninMuA_perCm_;                 ///< per λ: inside melanosomes
+  double leastMelaninMuA_perCm_ = 0;
+  std::vector<double> meanAngleRad_;                     ///< per λ: θo of Algorithm 2
+  std::vector<double> logAngleNormalisation_;            ///< per λ: log of p(θ)·e^{θ/θo}/sinθ
+  bool anglesDiffer_ = false;
+  std::vector<double> surfaceIndex_;                     ///< per λ: the top layer's index
+  std::vector<double> bottomIndex_;                      ///< per λ: the deepest layer's index
+  bool surfaceIndicesDiffer_ = false;
+  double smallestSurfaceIndex_ = 1;
+  std::optional<SurfaceNormalPolarSampler> facetPolar_;
+  double aspectSquared_ = 1;
+};
+
+}  // namespace hylios::skin

@@ -1,0 +1,264 @@
+// The spectral walk (one path, many wavelengths) against the per-wavelength analog walk it
+// replaces: same expectation for every wavelength, specimen and incidence, within 4 combined
+// standard errors (each side's error from its own per-path scores).
+#include "skin/spectral_walk.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "skin/skin_simulation.h"
+#include "skin/spectral_bundle.h"
+#include "skin/spectral_simulation.h"
+#include "skin/specimen.h"
+#include "tests/support/test_spectra.h"
+
+using namespace hylios::skin;
+
+namespace {
+
+// 21 wavelengths over 250–2500 nm: UV, the hemoglobin bands, the θo ramp (780–1400 nm) and
+// its end, the water bands at 1450 and 1940 nm.
+const std::vector<double> kWavelengthsNm = {250, 300,  365,  420,  500,  550,  577,
+                                            650, 700,  780,  900,  1000, 1100, 1200,
+                                            1300, 1400, 1450, 1650, 1940, 2200, 2500};
+
+std::vector<SkinOptics> opticsAt(const std::string& specimen, const std::vector<double>& wavelengths) {
+  const Specimen s = loadSpecimen(specimen, hylios::test::specimenDir());
+  std::vector<SkinOptics> optics;
+  for (double w : wavelengths) optics.push_back(computeSkinOptics(s, hylios::test::spectra(), w));
+  return optics;
+}
+
+double z(const Estimate& a, const Estimate& b) {
+  const double sigma = std::hypot(a.standardError, b.standardError);
+  return sigma > 0 ? (a.mean - b.mean) / sigma : (a.mean == b.mean ? 0.0 : INFINITY);
+}
+
+/// z of a spectral estimate against a per-wavelength one made of `rays` 0/1 scores: the analog
+/// side's error is the binomial sqrt(p(1 − p)/n) at the pooled mean, so a rare outcome that the
+/// analog walk never saw (0 ± 0) is judged by what its count could have been.
+double zAgainstAnalog(const Estimate& spectral, const Estimate& analog, std::uint64_t rays) {
+  const double p = 0.5 * (spectral.mean + analog.mean);
+  const double analogError = std::sqrt(std::fmax(p * (1 - p), 0.0) / static_cast<double>(rays));
+  return z(spectral, {analog.mean, std::fmax(analog.standardError, analogError)});
+}
+
+/// Compares every quantity of the two tallies; returns the failures as text (empty if none).
+std::string compare(const SkinTally& spectral, const SkinTally& analog, const std::string& where) {
+  std::ostringstream failures;
+  auto check = [&](const char* what, const Estimate& a, const Estimate& b) {
+    const double score = zAgainstAnalog(a, b, analog.rays());
+    if (!(std::fabs(score) <= 4.0))
+      failures << where << " " << what << ": spectral " << a.mean << " ± " << a.standardError
+               << ", per-wavelength " << b.mean << " ± " << b.standardError << " (z = " << score << ")\n";
+  };
+  check("R", spectral.reflectance(), analog.reflectance());
+  check("R surface", spectral.surfaceReflectance(), analog.surfaceReflectance());
+  check("R subsurface", spectral.subsurfaceReflectance(), analog.subsurfaceReflectance());
+  check("A", spectral.absorptance(), analog.absorptance());
+  for (Layer layer : kAllLayers)
+    check((std::string("A ") + std::string(layerName(layer))).c_str(), spectral.absorptance(layer),
+          analog.absorptance(layer));
+  return failures.str();
+}
+
+/// Spectral and per-wavelength walks of `specimen` at 0°, 45° and 80° over kWavelengthsNm.
+void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays) {
+  const std::vector<SkinOptics> optics = opticsAt(specimen, kWavelengthsNm);
+  std::string failures;
+  for (double angle : {0.0, 45.0, 80.0}) {
+    SpectralRunOptions spectral;
+    spectral.incidenceDeg = angle;
+    spectral.rays = rays;
+    spectral.seed = 11;
+    const std::vector<SkinTally> s = simulateSkinSpectral(optics, spectral);
+    for (std::size_t i = 0; i < optics.size(); ++i) {
+      WalkRunOptions analog;
+      analog.incidenceDeg = angle;
+      analog.rays = rays;
+      analog.seed = 12;
+      std::ostringstream where;
+      where << specimen << " " << kWavelengthsNm[i] << " nm " << angle << "°";
+      failures += compare(s[i], simulateSkin(optics[i], analog), where.str());
+      EXPECT_EQ(s[i].eventLimited().mean, 0.0) << where.str();
+    }
+  }
+  EXPECT_TRUE(failures.empty()) << failures;
+}
+
+}  // namespace
+
+// 21 wavelengths × 3 angles × 10 quantities per specimen; 6000 paths each side (σ(R) ≈ 0.005).
+TEST(SpectralWalk, S1MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S1", 6000); }
+TEST(SpectralWalk, S2MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S2", 6000); }
+TEST(SpectralWalk, S3MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S3", 6000); }
+TEST(SpectralWalk, S4MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S4", 6000); }
+
+TEST(SpectralWalk, TabulatedMelanosomesMatchTheExactWalk) {
+  // The fast default draws each melanosome's internal path from a 2¹⁸-path table.
+  const std::vector<double> wavelengths = {365, 550, 1100};
+  for (const char* specimen : {"S1", "S4"}) {
+    const std::vector<SkinOptics> optics = opticsAt(specimen, wavelengths);
+    SpectralRunOptions spectral;
+    spectral.incidenceDeg = 45;
+    spectral.rays = 20000;
+    spectral.walk.tabulatedMelanosomes = true;
+    const std::vector<SkinTally> s = simulateSkinSpectral(optics, spectral);
+    for (std::size_t i = 0; i < optics.size(); ++i) {
+      WalkRunOptions analog;
+      analog.incidenceDeg = 45;
+      analog.rays = 20000;
+      const SkinTally a = simulateSkin(optics[i], analog);
+      EXPECT_LE(std::fabs(z(s[i].reflectance(), a.reflectance())), 4.0) << specimen << " " << wavelengths[i];
+      EXPECT_LE(std::fabs(z(s[i].absorptance(Layer::StratumBasale), a.absorptance(Layer::StratumBasale))), 4.0)
+          << specimen << " " << wavelengths[i];
+    }
+  }
+}
+
+TEST(SpectralWalk, TruncatedStackTransmittanceAndDirectionsMatch) {
+  // Fig. 8's epidermis over air: the smooth bottom into a fixed index (λ-dependent Fresnel) and
+  // the transmitted-direction histogram, compared bin by bin (two-sample chi-square, 20 bins).
+  const std::vector<SkinOptics> optics = opticsAt("S2", {290, 302, 315, 330});
+  WalkOptions walk;
+  walk.deepestLayer = Layer::StratumBasale;
+  walk.belowRefractiveIndex = 1.0;
+  TallyOptions tally;
+  tally.polarBins = 20;
+  SpectralRunOptions spectral;
+  spectral.rays = 30000;
+  spectral.walk = walk;
+  spectral.tally = tally;
+  const std::vector<SkinTally> s = simulateSkinSpectral(optics, spectral);
+  ASSERT_EQ(groupIntoBundles(optics, walk).size(), 1u);  // one bundle: the ratios are exercised
+  for (std::size_t i = 0; i < optics.size(); ++i) {
+    WalkRunOptions analog;
+    analog.rays = 30000;
+    analog.walk = walk;
+    analog.tally = tally;
+    const SkinTally a = simulateSkin(optics[i], analog);
+    EXPECT_LE(std::fabs(z(s[i].transmittance(), a.transmittance())), 4.0) << optics[i].wavelengthNm;
+    double chi2 = 0;
+    for (std::size_t bin = 0; bin < tally.polarBins; ++bin) {
+      const Estimate x = s[i].transmittedDirections()->estimate(bin);
+      const Estimate y = a.transmittedDirections()->estimate(bin);
+      const double variance = x.standardError * x.standardError + y.standardError * y.standardError;
+      if (variance > 0) chi2 += (x.mean - y.mean) * (x.mean - y.mean) / variance;
+    }
+    EXPECT_LT(chi2, 45.3) << optics[i].wavelengthNm;  // χ²(20) upper 0.1 % point
+  }
+}
+
+TEST(SpectralWalk, ReflectionDirectionsAndRadialProfileMatch) {
+  const std::vector<SkinOptics> optics = opticsAt("S1", {540, 550, 560});
+  TallyOptions tally;
+  tally.polarBins = 9;
+  tally.azimuthBins = 4;
+  tally.radialBins = 12;
+  tally.maxRadiusCm = 0.3;
+  SpectralRunOptions spectral;
+  spectral.incidenceDeg = 45;
+  spectral.rays = 30000;
+  spectral.tally = tally;
+  const std::vector<SkinTally> s = simulateSkinSpectral(optics, spectral);
+  WalkRunOptions analog;
+  analog.incidenceDeg = 45;
+  analog.rays = 30000;
+  analog.tally = tally;
+  const SkinTally a = simulateSkin(optics[1], analog);
+  auto chi2 = [](const Histogram& x, const Histogram& y) {
+    double sum = 0;
+    for (std::size_t bin = 0; bin < x.binCount(); ++bin) {
+      const Estimate p = x.estimate(bin), q = y.estimate(bin);
+      const double variance = p.standardError * p.standardError + q.standardError * q.standardError;
+      if (variance > 0) sum += (p.mean - q.mean) * (p.mean - q.mean) / variance;
+    }
+    return sum;
+  };
+  EXPECT_LT(chi2(*s[1].surfaceDirections(), *a.surfaceDirections()), 67.0);      // χ²(36) 0.1 %
+  EXPECT_LT(chi2(*s[1].subsurfaceDirections(), *a.subsurfaceDirections()), 67.0);
+  EXPECT_LT(chi2(*s[1].radialExits(), *a.radialExits()), 32.9);                  // χ²(12) 0.1 %
+}
+
+TEST(SpectralWalk, SameSeedSameResultAtOneAndTwoThreads) {
+  const std::vector<SkinOptics> optics = opticsAt("S3", {400, 405, 410, 1100, 1105, 2000});
+  SpectralRunOptions spectral;
+  spectral.incidenceDeg = 30;
+  spectral.rays = 3000;
+  std::vector<SkinTally> one, two;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = simulateSkinSpectral(optics, spectral);
+  }
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    two = simulateSkinSpectral(optics, spectral);
+  }
+  for (std::size_t i = 0; i < optics.size(); ++i) {
+    EXPECT_EQ(one[i].reflectance().mean, two[i].reflectance().mean);
+    EXPECT_EQ(one[i].reflectance().standardError, two[i].reflectance().standardError);
+    EXPECT_EQ(one[i].absorptance(Layer::PapillaryDermis).mean, two[i].absorptance(Layer::PapillaryDermis).mean);
+  }
+}
+
+TEST(SpectralWalk, OneWavelengthAloneOrInABundleHasTheSameExpectation) {
+  // A bundle of one carries no ratios; the same λ inside a bundle of 16 must agree within noise.
+  const std::vector<SkinOptics> bundle = opticsAt("S1", {500, 505, 510, 515, 520, 525, 530, 535, 540,
+                                                         545, 550, 555, 560, 565, 570, 575});
+  SpectralWalk together(bundle);
+  SpectralWalk alone(std::vector<SkinOptics>{bundle[5]});
+  RunningStatistic inBundle, single;
+  SpectralPath path;
+  for (std::uint64_t i = 0; i < 20000; ++i) {
+    Rng a(3, 1, i), b(3, 2, i);
+    together.trace(incidentDirection(45), a, path);
+    inBundle.add(path.exitWeight[5] + (path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[5]));
+    alone.trace(incidentDirection(45), b, path);
+    single.add(path.exitWeight[0] + (path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[0]));
+  }
+  EXPECT_LE(std::fabs(z(inBundle.estimate(), single.estimate())), 4.0);
+}
+
+TEST(SpectralWalk, RefusesOpticsThatCannotShareAPath) {
+  std::vector<SkinOptics> optics = opticsAt("S1", {550, 560});
+  optics[1].layers[index(Layer::StratumSpinosum)].thicknessCm *= 2;
+  EXPECT_THROW(SpectralWalk{optics}, std::invalid_argument);
+  std::vector<SkinOptics> angles = opticsAt("S1", {1300, 1450});  // θo > 0 and θo = 0
+  EXPECT_THROW(SpectralWalk{angles}, std::invalid_argument);
+  WalkOptions smooth;
+  smooth.roughSurface = false;
+  EXPECT_THROW((SpectralWalk{opticsAt("S1", {550, 560}), smooth}), std::invalid_argument);
+  EXPECT_THROW(SpectralWalk{std::vector<SkinOptics>{}}, std::invalid_argument);
+}
+
+TEST(SpectralBundle, GroupsByAngleRayleighDepthAndSize) {
+  std::vector<double> wavelengths;
+  for (double w = 250; w <= 2500; w += 5) wavelengths.push_back(w);
+  const std::vector<SkinOptics> optics = opticsAt("S1", wavelengths);
+  const BundleRule rule;
+  const auto bundles = groupIntoBundles(optics, {}, rule);
+  std::size_t total = 0;
+  for (const auto& bundle : bundles) {
+    total += bundle.size();
+    ASSERT_LE(bundle.size(), rule.maxWavelengths);
+    double lowTheta = INFINITY, highTheta = 0;
+    for (std::size_t i : bundle) {
+      lowTheta = std::min(lowTheta, optics[i].meanScatteringAngleRad);
+      highTheta = std::max(highTheta, optics[i].meanScatteringAngleRad);
+    }
+    EXPECT_EQ(lowTheta == 0, highTheta == 0);  // θo = 0 never shares with θo > 0
+    if (lowTheta > 0) EXPECT_LE(std::log(highTheta / lowTheta), rule.maxLogAngleSpread + 1e-12);
+    for (std::size_t k = 1; k < bundle.size(); ++k)
+      EXPECT_LT(optics[bundle[k - 1]].wavelengthNm, optics[bundle[k]].wavelengthNm);
+  }
+  EXPECT_EQ(total, wavelengths.size());
+  EXPECT_LT(bundles.size(), 40u);  // the whole curve shares paths (451 wavelengths)
+  WalkOptions smooth;
+  smooth.roughSurface = false;  // a smooth surface refracts every index elsewhere: one λ per bundle
+  EXPECT_EQ(groupIntoBundles(opticsAt("S1", {550, 560, 570}), smooth).size(), 3u);
+}
