@@ -3,7 +3,6 @@
 // rays per steradian, paper Fig. 11) and as BRDF (Fig. 10), for one wavelength or the mean over
 // several (--visible: 380–780 nm every 10 nm, equal weight per wavelength — no illuminant
 // weighting, since the paper does not name one).
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <cmath>
@@ -21,6 +20,7 @@
 #include "app/wavelength_list.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
+#include "skin/core/thread_limit.h"
 
 namespace hylios {
 namespace {
@@ -118,9 +118,7 @@ void plotInPlane(const BrdfArguments& args, const std::string& specimenName, con
 void runBrdf(const BrdfArguments& args) {
   if (args.visible == !args.wavelengths.empty())
     throw std::invalid_argument("hylios brdf: give exactly one of --wavelengths LIST and --visible");
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (args.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
+  const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   const std::vector<double> wavelengths = parseWavelengthList(args.visible ? kVisibleWavelengths : args.wavelengths);

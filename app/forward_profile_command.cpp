@@ -6,7 +6,6 @@
 // number (e.g. 1.0 for air) adds that interface's refraction and total internal reflection.
 // Output: per polar bin (angle from the inward normal, azimuths merged) the transmitted fraction
 // per steradian, and the same normalised to the bin at 0° as in the paper's plot.
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <cstdio>
@@ -21,6 +20,7 @@
 #include "app/specimen_options.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
+#include "skin/core/thread_limit.h"
 
 namespace hylios {
 namespace {
@@ -88,9 +88,7 @@ void plotProfile(const ForwardProfileArguments& args, const std::string& specime
 }
 
 void runForwardProfile(const ForwardProfileArguments& args) {
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (args.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
+  const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   const skin::SkinOptics optics = skin::computeSkinOptics(specimen, spectra, args.wavelengthNm);

@@ -1,7 +1,6 @@
 // hylios radial-profile: R(r), the subsurface reflectance per unit area at distance r from the
 // entry point (the radially symmetric part of the BSSRDF), in cm⁻²: the fraction of incident
 // rays leaving through the surface within an annulus divided by its area π(r2² − r1²).
-#include <tbb/global_control.h>
 
 #include <cstdio>
 #include <memory>
@@ -14,6 +13,7 @@
 #include "app/specimen_options.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
+#include "skin/core/thread_limit.h"
 
 namespace hylios {
 namespace {
@@ -65,9 +65,7 @@ void plotProfile(const RadialProfileArguments& args, const std::string& specimen
 }
 
 void runRadialProfile(const RadialProfileArguments& args) {
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (args.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
+  const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   const skin::SkinOptics optics = skin::computeSkinOptics(specimen, spectra, args.wavelengthNm);

@@ -1,7 +1,6 @@
 // `hylios slab`: the generic layered-slab Monte Carlo (MCML's problem) from the command line;
 // writes one CSV row of reflectance, transmittance and absorptance with standard errors.
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 
 #include <cstdint>
 #include <iostream>
@@ -15,6 +14,7 @@
 #include "app/commands.h"
 #include "app/slab_layer_spec.h"
 #include "skin/layered_slab.h"
+#include "skin/core/thread_limit.h"
 
 namespace hylios {
 namespace {
@@ -58,8 +58,7 @@ void runSlab(const SlabOptions& o) {
   if (o.scheme == "weighted") run.scheme = skin::AbsorptionScheme::WeightWithRoulette;
   if (o.rays == 0) throw std::invalid_argument("--rays must be at least 1");
   if (o.threads < 0) throw std::invalid_argument("--threads must be >= 0 (0: all cores)");
-  std::optional<tbb::global_control> limit;
-  if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
+  const ThreadLimit threadLimit(o.threads);
   const skin::SlabResult result = skin::simulateLayeredSlab(problem, run);
   writeTextAtomically(o.out, csvFor(result));
   std::cout << fmt::format("Rsp {:.6f}  Rd {:.6f} ± {:.6f}  Tt {:.6f} ± {:.6f}  A {:.6f} ± {:.6f}  -> {}\n",

@@ -1,5 +1,4 @@
 // hylios spectrum: total hemispherical reflectance of a specimen over wavelengths (paper Figs. 7, 9).
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <cstdio>
@@ -20,6 +19,7 @@
 #include "app/wavelength_list.h"
 #include "skin/effect_plan.h"
 #include "skin/skin_simulation.h"
+#include "skin/core/thread_limit.h"
 
 namespace hylios {
 namespace {
@@ -125,9 +125,7 @@ skin::SkinTally tableTally(const skin::SkinWalk& walk, const SpectrumArguments& 
 }
 
 void runSpectrum(const SpectrumArguments& args) {
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (args.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
+  const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   const std::vector<double> wavelengths = parseWavelengthList(args.wavelengths);

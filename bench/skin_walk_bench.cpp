@@ -3,7 +3,6 @@
 // WalkOptions::tabulatedMelanosomes, issue 5), and of the MCML three-layer sample slab
 // (photons/s, analog absorption, one thread). items_per_second is the figure to read.
 #include <benchmark/benchmark.h>
-#include <tbb/global_control.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
+#include "skin/core/thread_limit.h"
 
 namespace {
 using namespace hylios::skin;
@@ -39,7 +39,7 @@ const Specimen& specimen(const std::string& name) {
 constexpr std::uint64_t kRaysPerIteration = 8192;
 
 void skinWalkWith(benchmark::State& state, const std::string& specimenName, bool tabulatedMelanosomes) {
-  tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+  const hylios::ThreadLimit oneThread(1);
   const double wavelengthNm = static_cast<double>(state.range(0));
   const SkinOptics optics = computeSkinOptics(specimen(specimenName), spectra(), wavelengthNm);
   WalkRunOptions run;
@@ -66,7 +66,7 @@ void skinWalkTabulated(benchmark::State& state, const std::string& specimenName)
 }
 
 void mcmlThreeLayerSlab(benchmark::State& state) {
-  tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+  const hylios::ThreadLimit oneThread(1);
   // MCML manual Table 6.7 / the MCML sample input: three layers of n = 1.37 in air.
   SlabProblem problem;
   problem.layers = {{1.37, 1, 100, 0.9, 0.1}, {1.37, 1, 10, 0.0, 0.1}, {1.37, 2, 10, 0.7, 0.2}};

@@ -1,4 +1,5 @@
 #include "skin/exit_distribution.h"
+#include "skin/core/constants.h"
 
 #include <cmath>
 #include <functional>
@@ -7,7 +8,6 @@
 
 namespace hylios::skin {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kHalfPi = kPi / 2;
 constexpr double kDegPerRad = 180.0 / kPi;
 

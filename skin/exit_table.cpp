@@ -1,7 +1,6 @@
 #include "skin/exit_table.h"
 
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -13,11 +12,12 @@
 #include <system_error>
 
 #include "skin/core/content_hash.h"
+#include "skin/core/atomic_file.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr char kMagic[8] = {'H', 'Y', 'L', 'X', 'T', 'A', 'B', '1'};
 constexpr std::size_t kHeaderBytes = 8 + 4 * 8;
 constexpr std::uint64_t kChunkRays = 2048;
@@ -474,27 +474,13 @@ void ExitTable::write(const std::filesystem::path& path) const {
   header.u64(key_);
   header.u64(payload.size());
   header.u64(fnv1a64(payload.data(), payload.size()));
-  static std::atomic<std::uint64_t> counter{0};
-  std::filesystem::path tmp = path;
-  tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  {
+  writeAtomically(path, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out.write(header.bytes.data(), static_cast<std::streamsize>(header.bytes.size()));
     out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
     out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(tmp, ignored);
-      throw std::runtime_error("exit table: cannot write '" + tmp.string() + "'");
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(tmp, path, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw std::runtime_error("exit table: cannot rename '" + tmp.string() + "' to '" + path.string() + "': " + error.message());
-  }
+    if (!out) throw std::runtime_error("exit table: cannot write '" + tmp.string() + "'");
+  });
 }
 
 std::optional<ExitTable> ExitTable::read(const std::filesystem::path& path, const SkinWalk& walk,

@@ -14,12 +14,12 @@
 #include "skin/sampling/henyey_greenstein.h"
 #include "skin/interface_crossing.h"
 #include "skin/core/vector3.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 // MCML's defaults for implicit capture: roulette below this weight, survive with 1/kRouletteFactor.
 constexpr double kRouletteThreshold = 1e-4;
 constexpr double kRouletteFactor = 10.0;

@@ -1,4 +1,5 @@
 #include "skin/melanosome_scattering_angle.h"
+#include "skin/core/constants.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -10,7 +11,6 @@ double melanosomeMeanScatteringAngleRad(double wavelengthNm) {
   if (!std::isfinite(wavelengthNm) || !(wavelengthNm > 0))
     throw std::invalid_argument("melanosome scattering angle: wavelength " +
                                 std::to_string(wavelengthNm) + " nm is not positive and finite");
-  constexpr double kPi = 3.14159265358979323846;
   const double fullAngleRad = kMelanosomeMeanScatteringAngleDeg * kPi / 180.0;
   if (wavelengthNm <= kMelanosomeAngleFalloffStartNm) return fullAngleRad;
   if (wavelengthNm >= kMelanosomeAngleFalloffEndNm) return 0.0;

@@ -1,4 +1,5 @@
 #include "skin/rayleigh_coefficient.h"
+#include "skin/core/constants.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,7 +7,6 @@
 
 namespace hylios::skin {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kCmPerNm = 1e-7;
 
 void requirePositive(double value, const char* what) {

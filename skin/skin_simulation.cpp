@@ -1,4 +1,5 @@
 #include "skin/skin_simulation.h"
+#include "skin/core/constants.h"
 
 #include <tbb/parallel_for.h>
 
@@ -11,7 +12,6 @@
 namespace hylios::skin {
 namespace {
 constexpr std::uint64_t kRaysPerChunk = 4096;
-constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 std::uint64_t wavelengthStream(double wavelengthNm) {

@@ -1,4 +1,5 @@
 #include "skin/spheroid.h"
+#include "skin/core/constants.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,7 +7,6 @@
 
 namespace hylios::skin {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 void checkProlateSpheroid(const ProlateSpheroid& s) {

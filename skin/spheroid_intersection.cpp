@@ -5,12 +5,11 @@
 #include <string>
 
 #include "skin/sampling/uniform_sample_check.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 6.28318530717958647693;
 constexpr double kSurfaceTolerance = 1e-6;  // in the normalised radius² of the unit-sphere image
 
 void requireUnit(const Vec3& v, const char* what, const char* where) {

@@ -1,7 +1,9 @@
 // The spectral film: per pixel and per channel (one channel per band wavelength), the sum of
-// radiance samples and their count. Each camera path carries one wavelength, drawn by
-// sampleChannel(): a band uniformly, then a channel of that band uniformly; a channel's
-// estimate is its sample mean (sum / count), so every band converges independently. At fewer
+// radiance samples and their count (also split by the parity of the sample index, for the noise
+// estimate). A camera path carries either one wavelength, drawn by sampleChannel() (a band
+// uniformly, then a channel of that band uniformly; addSample), or every wavelength of a band drawn
+// by sampleBand() (addBandSample); a channel's estimate is its sample mean (sum / count), so every
+// band converges independently. At fewer
 // samples than a band has channels some channels of a pixel get none; their value is then
 // interpolated linearly in wavelength between the nearest sampled channels of the same band
 // (the nearest one at the band's ends), never left at 0, which would darken the band by the
@@ -35,10 +37,26 @@ class Film {
   /// probability (not needed by the mean-per-channel estimator, but reported for MIS users).
   std::size_t sampleChannel(double u) const;
 
-  void addSample(int x, int y, std::size_t channel, double radiance);
+  /// The bands' channels (indices into channels()).
+  std::size_t bandCount() const { return bandChannels_.size(); }
+  const std::vector<std::size_t>& bandChannels(std::size_t band) const { return bandChannels_.at(band); }
+  /// A band for uniform u in [0, 1) (every band equally likely).
+  std::size_t sampleBand(double u) const;
+
+  /// One sample of one channel (per-wavelength paths). `odd`: the sample's index is odd (the two
+  /// halves of the samples give the render's noise, renderer/image/render_noise.h).
+  void addSample(int x, int y, std::size_t channel, double radiance, bool odd = false);
+  /// One sample of every channel of `band` at once (a path carrying the band's wavelengths):
+  /// radiance[i] for bandChannels(band)[i].
+  void addBandSample(int x, int y, std::size_t band, const double* radiance, bool odd = false);
   /// Mean radiance of a pixel's channel; for a channel without samples, interpolated from the
   /// band's sampled channels (see above); 0 while the pixel's band has no sample at all.
   double value(int x, int y, std::size_t channel) const;
+  /// The same from the even (odd = false) or odd samples alone.
+  double halfValue(int x, int y, std::size_t channel, bool odd) const;
+  /// Pixels whose centre ray sees a shape that does not emit (set by the renderer; empty: unknown).
+  const std::vector<bool>& coverage() const { return coverage_; }
+  void setCoverage(std::vector<bool> coverage);
   std::uint32_t sampleCount(int x, int y, std::size_t channel) const;
   /// Samples per pixel accumulated so far (recorded in EXR headers).
   int samplesPerPixelDone() const { return samplesPerPixelDone_; }
@@ -48,13 +66,23 @@ class Film {
   /// (y·width + x)·channels + channel): radiance sums and sample counts (render checkpoints).
   const std::vector<double>& sums() const { return sums_; }
   const std::vector<std::uint32_t>& counts() const { return counts_; }
+  /// The part of sums() and counts() from samples of odd index.
+  const std::vector<double>& oddSums() const { return oddSums_; }
+  const std::vector<std::uint32_t>& oddCounts() const { return oddCounts_; }
   /// Replaces the accumulated state with a saved one (a render checkpoint's). Throws
   /// std::invalid_argument, saying what is wrong, unless the sizes fit this film, every sum is
   /// finite, and every pixel's counts add up to samplesPerPixelDone (each sample adds one count).
-  void restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, int samplesPerPixelDone);
+  /// Whether samples fill a whole band at once (addBandSample) or one channel (addSample); set
+  /// before the first sample. restoreState checks the counts accordingly.
+  bool wholeBandSamples() const { return wholeBandSamples_; }
+  void setWholeBandSamples(bool whole) { wholeBandSamples_ = whole; }
+  void restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, std::vector<double> oddSums,
+                    std::vector<std::uint32_t> oddCounts, int samplesPerPixelDone);
 
  private:
-  double interpolatedValue(int x, int y, std::size_t channel) const;
+  /// Mean of a slot from the given sums and counts, interpolated within the band when it has none.
+  template <class Sum, class Count>
+  double meanOrInterpolated(int x, int y, std::size_t channel, const Sum& sum, const Count& count) const;
   std::size_t slot(int x, int y, std::size_t channel) const {
     return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) *
                channels_.size() + channel;
@@ -66,6 +94,10 @@ class Film {
   std::vector<std::size_t> positionInBand_;  ///< channel → its index in bandChannels_[band]
   std::vector<double> sums_;
   std::vector<std::uint32_t> counts_;
+  std::vector<double> oddSums_;
+  std::vector<std::uint32_t> oddCounts_;
+  std::vector<bool> coverage_;
+  bool wholeBandSamples_ = false;
   int samplesPerPixelDone_ = 0;
 };
 

@@ -52,14 +52,21 @@ std::vector<std::size_t> channelsOfBand(const Film& film, std::size_t band) {
   return indices;
 }
 
+/// Which samples a film value is taken from: all, or one half (the noise estimate).
+enum class FilmHalf { All, Even, Odd };
+
+double filmValue(const Film& film, int x, int y, std::size_t c, FilmHalf half) {
+  return half == FilmHalf::All ? film.value(x, y, c) : film.halfValue(x, y, c, half == FilmHalf::Odd);
+}
+
 /// Linear sRGB of a colour band at a pixel: XYZ = k·Σ L(λ_i)·cmf(λ_i)·Δλ, then the sRGB matrix.
 std::array<double, 3> pixelLinearSrgb(const Film& film, int x, int y,
                                       const std::vector<std::size_t>& channels, double stepNm,
-                                      double normalisation) {
+                                      double normalisation, FilmHalf half = FilmHalf::All) {
   std::array<double, 3> xyz{0, 0, 0};
   for (const std::size_t c : channels) {
     const auto cmf = cie1931(film.channels()[c].wavelengthNm);
-    const double radiance = film.value(x, y, c);
+    const double radiance = filmValue(film, x, y, c, half);
     for (int i = 0; i < 3; ++i) xyz[i] += radiance * cmf[i] * stepNm;
   }
   for (double& v : xyz) v *= normalisation;
@@ -67,10 +74,22 @@ std::array<double, 3> pixelLinearSrgb(const Film& film, int x, int y,
 }
 
 /// The band's radiance at a pixel: the single channel's mean, or the mean over a range's channels.
-double pixelBandMean(const Film& film, int x, int y, const std::vector<std::size_t>& channels) {
+double pixelBandMean(const Film& film, int x, int y, const std::vector<std::size_t>& channels,
+                     FilmHalf half = FilmHalf::All) {
   double sum = 0;
-  for (const std::size_t c : channels) sum += film.value(x, y, c);
+  for (const std::size_t c : channels) sum += filmValue(film, x, y, c, half);
   return sum / static_cast<double>(channels.size());
+}
+
+/// "name=365" or "name=380:780:10" per band, joined by ';' (the EXR attribute hylios:bands).
+std::string bandsAttribute(const std::vector<BandDesc>& bands) {
+  std::ostringstream text;
+  text.precision(17);
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    text << (b ? ";" : "") << bands[b].name << "=" << bands[b].minNm;
+    if (bands[b].isRange()) text << ":" << bands[b].maxNm << ":" << bands[b].stepNm;
+  }
+  return text.str();
 }
 
 FilmImages buildImages(const Film& film) {
@@ -79,6 +98,8 @@ FilmImages buildImages(const Film& film) {
   images.height = film.height();
   for (const auto& channel : film.channels()) images.channelNames.push_back(spectralChannelName(channel.wavelengthNm));
   images.channelNames.insert(images.channelNames.end(), {"R", "G", "B"});
+  const bool coverage = !film.coverage().empty();
+  if (coverage) images.channelNames.push_back("A");  // 1 where the pixel's centre ray sees an object
   const auto& bands = film.desc().bands;
   std::size_t rgbBand = 0;
   bool colour = false;
@@ -110,6 +131,9 @@ FilmImages buildImages(const Film& film) {
       } else {
         rgb.fill(pixelBandMean(film, x, y, rgbChannels));
       }
+      if (coverage)
+        pixel[film.channels().size() + 3] =
+            film.coverage()[static_cast<std::size_t>(y) * static_cast<std::size_t>(images.width) + x] ? 1.0f : 0.0f;
       for (int i = 0; i < 3; ++i) {
         pixel[film.channels().size() + static_cast<std::size_t>(i)] = static_cast<float>(rgb[i]);
         if (!std::isfinite(pixel[film.channels().size() + static_cast<std::size_t>(i)]))
@@ -143,6 +167,7 @@ void writeExr(const FilmImages& images, const Film& film,
     spec.attribute("hylios:sppTarget", film.desc().samplesPerPixel);
     spec.attribute("hylios:exposure", static_cast<float>(film.desc().exposure));
     spec.attribute("hylios:rgb", images.rgbDescription);
+    spec.attribute("hylios:bands", bandsAttribute(film.desc().bands));
     for (const auto& [name, value] : extraAttributes) spec.attribute(name, value);
     if (!out->open(tmp.string(), spec)) {
       throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
@@ -239,6 +264,44 @@ double colourBandNormalisation(const BandDesc& band) {
     throw std::invalid_argument("band '" + band.name + "' has no channel where the eye responds");
   }
   return 1.0 / whiteY;
+}
+
+NoiseImage filmHalfNoiseImage(const Film& film, bool odd) {
+  NoiseImage image;
+  image.width = film.width();
+  image.height = film.height();
+  const auto& bands = film.desc().bands;
+  std::vector<std::vector<std::size_t>> channels;
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    image.groups.push_back("band " + bands[b].name);
+    channels.push_back(channelsOfBand(film, b));
+  }
+  std::size_t colourBand = bands.size();
+  for (std::size_t b = 0; b < bands.size() && colourBand == bands.size(); ++b)
+    if (isColourBand(bands[b])) colourBand = b;
+  const bool colour = colourBand < bands.size();
+  if (colour) {
+    for (const char* name : {"R", "G", "B"}) image.groups.push_back(name);
+    image.rgb = {static_cast<int>(bands.size()), static_cast<int>(bands.size()) + 1, static_cast<int>(bands.size()) + 2};
+  }
+  const double normalisation = colour ? colourBandNormalisation(bands[colourBand]) : 0.0;
+  const FilmHalf half = odd ? FilmHalf::Odd : FilmHalf::Even;
+  image.values.reserve(static_cast<std::size_t>(image.width) * image.height * image.groups.size());
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      for (std::size_t b = 0; b < bands.size(); ++b) image.values.push_back(pixelBandMean(film, x, y, channels[b], half));
+      if (colour)
+        for (double v : pixelLinearSrgb(film, x, y, channels[colourBand], bands[colourBand].stepNm, normalisation, half))
+          image.values.push_back(v);
+    }
+  return image;
+}
+
+std::vector<GroupNoise> filmNoise(const Film& film) {
+  std::vector<GroupNoise> noise = measureNoise(filmHalfNoiseImage(film, false), filmHalfNoiseImage(film, true),
+                                               film.coverage());
+  for (GroupNoise& g : noise) g.medianRelative /= std::sqrt(2.0);  // the mean of two independent halves
+  return noise;
 }
 
 std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath,

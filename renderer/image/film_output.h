@@ -1,8 +1,10 @@
 // Writing a film: one multi-band OpenEXR in the spectral layout of Fichet, Pacanowski & Wilkie
 // (JCGT 10(3), 2021) — channels "S0.<wavelength with comma decimal separator>nm" (the channel means,
 // float) plus R, G, B preview channels, attributes spectralLayoutVersion = "1.0" and
-// emissiveUnits = "W.m^-2.sr^-1", "hylios:spp" and "hylios:sppTarget" (int), "hylios:exposure" and "hylios:rgb" (what
-// R, G, B hold) — and PNG previews beside it, one per band, named <stem>_<band>.png:
+// emissiveUnits = "W.m^-2.sr^-1", "hylios:spp" and "hylios:sppTarget" (int), "hylios:exposure", "hylios:rgb" (what
+// R, G, B hold) and "hylios:bands" ("name=365;visible=380:780:10": each band's wavelengths), plus a
+// channel "A" (1 where the pixel's centre ray sees a shape that does not emit, else 0) when the
+// renderer set the film's coverage — and PNG previews beside it, one per band, named <stem>_<band>.png:
 //   * a colour band (a range covering 400–700 nm): XYZ = k·Σ_i L(λ_i)·cmf(λ_i)·Δλ over its channels
 //     (CIE 1931 2°, Δλ = the band's step), k = colourBandNormalisation(); XYZ → linear sRGB (D65
 //     white); × film exposure; sRGB transfer, clamped to [0, 1]. R, G, B of the EXR are the same
@@ -22,6 +24,7 @@
 #include <vector>
 
 #include "renderer/image/film.h"
+#include "renderer/image/render_noise.h"
 
 namespace hylios {
 
@@ -46,6 +49,13 @@ double colourBandNormalisation(const BandDesc& band);
 std::vector<std::filesystem::path> writeFilmOutputs(
     const Film& film, const std::filesystem::path& exrPath,
     const std::vector<std::pair<std::string, std::string>>& extraAttributes = {});
+
+/// The film from its even (odd = false) or odd samples alone, reduced to the groups of
+/// renderer/image/render_noise.h: each band's mean radiance, and R, G, B of a colour band.
+NoiseImage filmHalfNoiseImage(const Film& film, bool odd);
+/// The film's own noise estimate: the two halves compared, scaled to the whole film (÷ √2), over
+/// its coverage mask.
+std::vector<GroupNoise> filmNoise(const Film& film);
 
 /// Pastes PNG panels side by side in a grid with their labels under them (a contact sheet).
 void writeContactSheet(const std::vector<std::filesystem::path>& panels,

@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -128,7 +129,23 @@ ExrImage readExrImage(const std::filesystem::path& path) {
                          image.pixels.data())) {
     throw std::runtime_error("cannot read the pixels of '" + path.string() + "': " + input->geterror());
   }
+  image.bands = spec.get_string_attribute("hylios:bands");
+  image.rgbDescription = spec.get_string_attribute("hylios:rgb");
   input->close();
+  const auto alpha = std::find(image.channelNames.begin(), image.channelNames.end(), "A");
+  if (alpha != image.channelNames.end()) {  // the coverage mask: not a compared channel
+    const std::size_t a = static_cast<std::size_t>(alpha - image.channelNames.begin());
+    const std::size_t stride = image.channelNames.size();
+    std::vector<float> kept;
+    kept.reserve(image.pixels.size() / stride * (stride - 1));
+    for (std::size_t p = 0; p * stride < image.pixels.size(); ++p) {
+      image.coverage.push_back(image.pixels[p * stride + a] >= 0.5f);
+      for (std::size_t c = 0; c < stride; ++c)
+        if (c != a) kept.push_back(image.pixels[p * stride + c]);
+    }
+    image.pixels = std::move(kept);
+    image.channelNames.erase(alpha);
+  }
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     if (!std::isfinite(image.pixels[i])) {
       const std::size_t pixel = i / image.channelNames.size();
@@ -176,6 +193,65 @@ ImageComparison compareImages(const ExrImage& test, const std::string& testName,
   comparison.overall = finish(pooled, "overall", referenceName);
   comparison.overall.wavelengthNm.reset();
   return comparison;
+}
+
+NoiseImage noiseImageOf(const ExrImage& image) {
+  NoiseImage noise;
+  noise.width = image.width;
+  noise.height = image.height;
+  std::vector<std::pair<std::size_t, double>> spectral;  // channel index, wavelength
+  for (std::size_t c = 0; c < image.channelNames.size(); ++c)
+    if (const auto w = parseSpectralChannelName(image.channelNames[c])) spectral.push_back({c, *w});
+  std::vector<std::vector<std::size_t>> groups;
+  auto inRange = [&](double lo, double hi) {
+    std::vector<std::size_t> members;
+    for (const auto& [c, w] : spectral)
+      if (w >= lo - 1e-9 * lo && w <= hi + 1e-9 * hi) members.push_back(c);
+    return members;
+  };
+  std::istringstream bands(image.bands);
+  std::string entry;
+  while (std::getline(bands, entry, ';')) {
+    const auto equals = entry.rfind('=');
+    if (equals == std::string::npos) continue;
+    const std::string name = entry.substr(0, equals);
+    std::istringstream numbers(entry.substr(equals + 1));
+    double lo = 0, hi = 0;
+    char colon = 0;
+    numbers >> lo;
+    hi = lo;
+    if (numbers >> colon && colon == ':') numbers >> hi;
+    std::vector<std::size_t> members = inRange(lo, hi);
+    if (members.empty()) throw std::runtime_error("image has no spectral channel for band '" + name + "'");
+    noise.groups.push_back("band " + name);
+    groups.push_back(std::move(members));
+  }
+  if (groups.empty() && !spectral.empty()) {
+    noise.groups.push_back("spectral mean");
+    groups.push_back(inRange(0, INFINITY));
+  }
+  std::array<int, 3> rgbChannels{-1, -1, -1};
+  if (image.rgbDescription.rfind("linear sRGB", 0) == 0)
+    for (int i = 0; i < 3; ++i) {
+      const auto at = std::find(image.channelNames.begin(), image.channelNames.end(), std::string(1, "RGB"[i]));
+      if (at != image.channelNames.end()) rgbChannels[i] = static_cast<int>(at - image.channelNames.begin());
+    }
+  const bool colour = rgbChannels[0] >= 0 && rgbChannels[1] >= 0 && rgbChannels[2] >= 0;
+  if (colour) {
+    for (const char* name : {"R", "G", "B"}) noise.groups.push_back(name);
+    noise.rgb = {static_cast<int>(groups.size()), static_cast<int>(groups.size()) + 1, static_cast<int>(groups.size()) + 2};
+  }
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      for (const auto& members : groups) {
+        double sum = 0;
+        for (std::size_t c : members) sum += image.value(x, y, c);
+        noise.values.push_back(sum / static_cast<double>(members.size()));
+      }
+      if (colour)
+        for (int i = 0; i < 3; ++i) noise.values.push_back(image.value(x, y, static_cast<std::size_t>(rgbChannels[i])));
+    }
+  return noise;
 }
 
 ImageComparison compareImageFiles(const std::filesystem::path& test, const std::filesystem::path& reference,

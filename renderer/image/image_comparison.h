@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/image/render_noise.h"
+
 namespace hylios {
 
 /// An image's float pixels, interleaved: pixels[(y·width + x)·channels + c].
@@ -25,6 +27,11 @@ struct ExrImage {
   int width = 0, height = 0;
   std::vector<std::string> channelNames;
   std::vector<float> pixels;
+  /// The file's channel "A" (hylios: 1 where the pixel sees an object), kept apart from the
+  /// compared channels; empty when the file has none.
+  std::vector<bool> coverage;
+  std::string bands;           ///< attribute hylios:bands (empty when absent)
+  std::string rgbDescription;  ///< attribute hylios:rgb (empty when absent)
 
   float value(int x, int y, std::size_t channel) const {
     return pixels[(static_cast<std::size_t>(y) * width + x) * channelNames.size() + channel];
@@ -32,8 +39,14 @@ struct ExrImage {
 };
 
 /// Reads every channel of subimage 0 of an image file (OpenEXR or any format OpenImageIO reads)
-/// as float. Throws naming the file when it cannot be read.
+/// as float (channel "A" into ExrImage::coverage). Throws naming the file when it cannot be read.
 ExrImage readExrImage(const std::filesystem::path& path);
+
+/// The image reduced for renderer/image/render_noise.h: per band of hylios:bands the mean over its
+/// spectral channels (one group "spectral mean" over every spectral channel without the
+/// attribute), and R, G, B when they hold a colour band's linear sRGB. Throws when a band's
+/// wavelength has no channel.
+NoiseImage noiseImageOf(const ExrImage& image);
 
 /// The differences in one channel (or pooled over channels, for "overall").
 struct ChannelDifference {

@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 constexpr char kMagic[] = "hylios render checkpoint\n";
 constexpr std::size_t kMagicSize = sizeof kMagic - 1;
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: odd-sample sums and counts (the noise estimate)
 
 /// Appends little-endian values to a byte buffer.
 class ByteWriter {
@@ -155,9 +155,11 @@ void writeRenderCheckpoint(const fs::path& path, const RenderIdentity& identity,
   for (const double nm : identity.channelWavelengthsNm) out.f64(nm);
   out.u32(static_cast<std::uint32_t>(film.samplesPerPixelDone()));
   out.u64(film.sums().size());
-  out.data().reserve(out.data().size() + film.sums().size() * 12 + 8);
+  out.data().reserve(out.data().size() + film.sums().size() * 24 + 8);
   for (const double sum : film.sums()) out.f64(sum);
   for (const std::uint32_t count : film.counts()) out.u32(count);
+  for (const double sum : film.oddSums()) out.f64(sum);
+  for (const std::uint32_t count : film.oddCounts()) out.u32(count);
   out.u64(skin::fnv1a64(out.data().data(), out.data().size()));
   writeAtomically(path, [&](const fs::path& tmp) {
     std::ofstream file(tmp, std::ios::binary);
@@ -205,11 +207,19 @@ RenderCheckpoint readRenderCheckpoint(const fs::path& path) {
   if (checkpoint.samplesPerPixelDone < 0 || checkpoint.samplesPerPixelDone > id.samplesPerPixelTarget)
     body.fail("it claims " + std::to_string(checkpoint.samplesPerPixelDone) + " samples per pixel of " +
               std::to_string(id.samplesPerPixelTarget));
-  if (body.left() != slots * 12) body.fail("its film data has the wrong size");
-  checkpoint.sums.reserve(static_cast<std::size_t>(slots));
-  checkpoint.counts.reserve(static_cast<std::size_t>(slots));
-  for (std::uint64_t s = 0; s < slots; ++s) checkpoint.sums.push_back(body.f64());
-  for (std::uint64_t s = 0; s < slots; ++s) checkpoint.counts.push_back(body.u32());
+  if (body.left() != slots * 24) body.fail("its film data has the wrong size");
+  auto readSums = [&](std::vector<double>& out) {
+    out.reserve(static_cast<std::size_t>(slots));
+    for (std::uint64_t s = 0; s < slots; ++s) out.push_back(body.f64());
+  };
+  auto readCounts = [&](std::vector<std::uint32_t>& out) {
+    out.reserve(static_cast<std::size_t>(slots));
+    for (std::uint64_t s = 0; s < slots; ++s) out.push_back(body.u32());
+  };
+  readSums(checkpoint.sums);
+  readCounts(checkpoint.counts);
+  readSums(checkpoint.oddSums);
+  readCounts(checkpoint.oddCounts);
   return checkpoint;
 }
 

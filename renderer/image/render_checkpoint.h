@@ -2,13 +2,14 @@
 // beside its OpenEXR as "<out>.hylios-state" so that `hylios render --resume` can continue it to
 // the very image an uninterrupted render gives.
 //
-// File layout (version 1; integers and doubles little-endian, doubles as IEEE-754 binary64 bits):
+// File layout (version 2; integers and doubles little-endian, doubles as IEEE-754 binary64 bits):
 //   magic      25 bytes "hylios render checkpoint\n"
-//   version    u32 = 1
+//   version    u32 = 2
 //   identity   u64 scene content hash; u64 n + n bytes options; u64 seed; u32 width; u32 height;
 //              u32 spp target; u64 channel count C + C × f64 channel wavelengths (nm)
 //   state      u32 spp done; u64 slot count S (= width·height·C) + S × f64 radiance sums
-//              + S × u32 sample counts (Film::sums()/counts() order)
+//              + S × u32 sample counts (Film::sums()/counts() order), then the same for the
+//              odd-index samples alone (Film::oddSums()/oddCounts(); version 2)
 //   checksum   u64 FNV-1a 64 (skin/core/content_hash.h) of every byte before it
 // The state is the film's own (double sums and counts), not the EXR's float means, so the sums
 // continue bit-identically.
@@ -46,6 +47,8 @@ struct RenderCheckpoint {
   int samplesPerPixelDone = 0;
   std::vector<double> sums;
   std::vector<std::uint32_t> counts;
+  std::vector<double> oddSums;
+  std::vector<std::uint32_t> oddCounts;
 };
 
 /// "<exrPath>.hylios-state".

@@ -14,27 +14,21 @@
 
 #include <glm/glm.hpp>
 
+#include "skin/core/source_location.h"
 #include "skin/effect_plan.h"
 #include "skin/specimen.h"
 
 namespace hylios {
 
-struct FileLocation {
-  std::string file;
-  int line = 0;
-  int column = 0;
-  std::string str() const { return file + ":" + std::to_string(line) + ":" + std::to_string(column); }
-};
-
 /// Any error in a scene or in what it refers to; what() reads "file:line:col: message".
 class SceneError : public std::runtime_error {
  public:
-  SceneError(const FileLocation& where, const std::string& message)
+  SceneError(const SourceLocation& where, const std::string& message)
       : std::runtime_error(where.str() + ": " + message), where_(where) {}
-  const FileLocation& where() const { return where_; }
+  const SourceLocation& where() const { return where_; }
 
  private:
-  FileLocation where_;
+  SourceLocation where_;
 };
 
 struct CameraDesc {
@@ -44,7 +38,7 @@ struct CameraDesc {
   double verticalFovDeg = 40;
   double apertureRadius = 0;   ///< thin lens; 0 = pinhole
   double focusDistance = 0;    ///< 0 = distance to lookAt
-  FileLocation where;
+  SourceLocation where;
 };
 
 /// One output band: a single wavelength (minNm == maxNm) or a range sampled at stepNm intervals
@@ -57,7 +51,7 @@ struct BandDesc {
   /// Fixed pseudo-colour scale for single-wavelength previews (so a series compares).
   double previewMin = 0;
   double previewMax = 1;
-  FileLocation where;
+  SourceLocation where;
   bool isRange() const { return maxNm > minNm; }
   /// The channel wavelengths this band writes.
   std::vector<double> channelWavelengths() const;
@@ -69,7 +63,7 @@ struct FilmDesc {
   int samplesPerPixel = 16;
   std::vector<BandDesc> bands;
   double exposure = 1.0;       ///< scale applied before the sRGB transfer of the visible preview
-  FileLocation where;
+  SourceLocation where;
 };
 
 /// An emission spectrum (relative spectral radiance), evaluated per wavelength.
@@ -80,7 +74,7 @@ struct EmissionDesc {
   double centreNm = 0;         ///< Led: Gaussian centre
   double fwhmNm = 0;           ///< Led: full width at half maximum
   std::vector<double> tableWavelengthNm, tableValue;  ///< Tabulated (file or inline)
-  FileLocation where;
+  SourceLocation where;
 };
 
 struct LightDesc {
@@ -91,7 +85,7 @@ struct LightDesc {
   double spotInnerDeg = 0;
   double spotOuterDeg = 0;
   std::string shape;               ///< Area: name of the emitting shape
-  FileLocation where;
+  SourceLocation where;
 };
 
 /// Skin: a specimen plus overrides, and spatially varying inputs.
@@ -117,7 +111,7 @@ struct MaterialDesc {
   EmissionDesc reflectance;            ///< Diffuse: reflectance spectrum in [0, 1]
   double refractiveIndex = 1.5;        ///< Dielectric
   double roughness = 0;                ///< Dielectric: 0 = smooth
-  FileLocation where;
+  SourceLocation where;
 };
 
 struct ShapeDesc {
@@ -132,7 +126,7 @@ struct ShapeDesc {
   glm::dvec3 planeNormal{0, 1, 0};
   double planeSize = 10;
   std::string material;                ///< name of a MaterialDesc
-  FileLocation where;
+  SourceLocation where;
 };
 
 struct IntegratorDesc {
@@ -140,7 +134,7 @@ struct IntegratorDesc {
   std::uint64_t seed = 1;
   std::string skinMode = "walk";       ///< "walk" (exact HyLIoS walk at every hit) or "table" (issue 5)
   double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner (skin/effect_plan.h)
-  FileLocation where;
+  SourceLocation where;
 };
 
 struct SceneDesc {

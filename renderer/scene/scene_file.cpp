@@ -47,7 +47,7 @@ std::vector<const toml::table*> arrayOfTables(Reader& reader, const std::string&
 class NameRegistry {
  public:
   explicit NameRegistry(std::string what) : what_(std::move(what)) {}
-  void add(const std::string& name, const FileLocation& where) {
+  void add(const std::string& name, const SourceLocation& where) {
     const auto [it, inserted] = where_.emplace(name, where);
     if (!inserted)
       throw SceneError(where, fmt::format("duplicate {} name '{}' (first defined at {})", what_,
@@ -62,11 +62,11 @@ class NameRegistry {
 
  private:
   std::string what_;
-  std::map<std::string, FileLocation> where_;
+  std::map<std::string, SourceLocation> where_;
 };
 
 /// Where `name = ...` of an element is (the element itself when it has none).
-FileLocation nameLocation(const toml::table& t, const TomlSource& src) {
+SourceLocation nameLocation(const toml::table& t, const TomlSource& src) {
   const toml::node* name = t.get("name");
   return locationOf(src, name ? *name : static_cast<const toml::node&>(t));
 }
@@ -228,7 +228,7 @@ LightDesc readLight(const toml::table& t, int index, const TomlSource& src,
 
 struct PositionedOverride {
   skin::SpecimenOverride value;
-  FileLocation where;  ///< the key's position
+  SourceLocation where;  ///< the key's position
 };
 
 /// Leaves of `table` with dotted keys: `a.b = 1` and `"a.b" = 1` give the same override.
@@ -240,8 +240,7 @@ void flattenOverrides(const toml::table& table, const std::string& prefix, const
       flattenOverrides(*nested, name + ".", r, out);
       continue;
     }
-    const skin::TomlPosition p = skin::tomlPosition(key.source());
-    const FileLocation at{r.source().name, p.line, p.column};
+    const SourceLocation at = skin::tomlSourceLocation(r.source().name, key.source());
     const double number = r.toNumber(value, "override '" + name + "'", NumberRange::any());
     out.push_back({{name, number, at.str()}, at});
   }
@@ -418,7 +417,7 @@ const toml::table& requiredTable(Reader& root, const std::string& key) {
 
 std::vector<LightDesc> readLights(Reader& root, const TomlSource& src, const NameRegistry& shapes) {
   std::vector<LightDesc> lights;
-  std::map<std::string, FileLocation> areaShapes;
+  std::map<std::string, SourceLocation> areaShapes;
   const LightDesc* environment = nullptr;
   int index = 0;
   for (const toml::table* t : arrayOfTables(root, "light", "[[light]]")) {
@@ -473,8 +472,7 @@ SceneDesc parseSceneText(const std::string& tomlText, const std::string& sourceN
   try {
     root = toml::parse(tomlText, sourceName);
   } catch (const toml::parse_error& error) {
-    const skin::TomlPosition p = skin::tomlPosition(error.source());
-    throw SceneError({sourceName, p.line, p.column}, std::string(error.description()));
+    throw SceneError(skin::tomlSourceLocation(sourceName, error.source()), std::string(error.description()));
   }
   SceneDesc scene = parseRoot(root, {sourceName, baseDir});
   scene.file = sourceName;

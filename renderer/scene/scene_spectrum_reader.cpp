@@ -13,7 +13,7 @@ namespace {
 
 using Reader = TomlTableReader;
 
-skin::SpectralTable loadTable(const std::filesystem::path& file, const FileLocation& where) {
+skin::SpectralTable loadTable(const std::filesystem::path& file, const SourceLocation& where) {
   try {
     return skin::SpectralTable::loadCsv(file);
   } catch (const skin::SpectralTableError& error) {
@@ -24,7 +24,7 @@ skin::SpectralTable loadTable(const std::filesystem::path& file, const FileLocat
 /// `file = "x.csv"` (header row; first column wavelength in nm) and optionally `column`.
 void readTableFile(Reader& r, EmissionDesc& e) {
   const std::filesystem::path file = r.existingFile("file");
-  const FileLocation where = r.whereValue("file");
+  const SourceLocation where = r.whereValue("file");
   const skin::SpectralTable table = loadTable(file, where);
   std::size_t column = 0;
   if (r.has("column")) {

@@ -6,7 +6,7 @@
 
 namespace hylios {
 
-TextureMap::TextureMap(const std::filesystem::path& path, const FileLocation& where) {
+TextureMap::TextureMap(const std::filesystem::path& path, const SourceLocation& where) {
   auto input = OIIO::ImageInput::open(path.string());
   if (!input) throw SceneError(where, "cannot read texture '" + path.string() + "': " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();

@@ -16,7 +16,7 @@ class TextureMap {
  public:
   /// Throws SceneError at `where` when the file is missing or unreadable, or holds a value that
   /// is not finite.
-  TextureMap(const std::filesystem::path& path, const FileLocation& where);
+  TextureMap(const std::filesystem::path& path, const SourceLocation& where);
   /// Builds a texture from rows of values (row 0 = top of the image), for tests.
   TextureMap(int width, int height, std::vector<float> valuesTopRowFirst);
 

@@ -24,9 +24,8 @@ std::string NumberRange::describe() const {
   return fmt::format("must be in {}{}, {}{}", minOpen ? "(" : "[", min, max, maxOpen ? ")" : "]");
 }
 
-FileLocation locationOf(const TomlSource& source, const toml::node& node) {
-  const skin::TomlPosition p = skin::tomlPosition(node.source());
-  return {source.name, p.line, p.column};
+SourceLocation locationOf(const TomlSource& source, const toml::node& node) {
+  return skin::tomlSourceLocation(source.name, node.source());
 }
 
 std::string messageWithoutLocation(const SceneError& error) {
@@ -43,15 +42,14 @@ TomlTableReader::TomlTableReader(const toml::table& table, std::string label,
     if (std::find(knownKeys.begin(), knownKeys.end(), k) != knownKeys.end()) continue;
     std::string list;
     for (const auto& known : knownKeys) list += (list.empty() ? "" : ", ") + known;
-    const skin::TomlPosition p = skin::tomlPosition(key.source());
-    throw SceneError({source_.name, p.line, p.column},
+    throw SceneError(skin::tomlSourceLocation(source_.name, key.source()),
                      fmt::format("unknown key '{}' in {} (known keys: {})", k, label_, list));
   }
 }
 
-FileLocation TomlTableReader::where() const { return locationOf(source_, table_); }
+SourceLocation TomlTableReader::where() const { return locationOf(source_, table_); }
 
-FileLocation TomlTableReader::whereValue(const std::string& key) const {
+SourceLocation TomlTableReader::whereValue(const std::string& key) const {
   const toml::node* n = table_.get(key);
   return n ? locationOf(source_, *n) : where();
 }
@@ -187,8 +185,7 @@ void TomlTableReader::finish(const std::string& variant) const {
   for (auto&& [key, value] : table_) {
     const std::string k(key.str());
     if (read_.count(k)) continue;
-    const skin::TomlPosition p = skin::tomlPosition(key.source());
-    throw SceneError({source_.name, p.line, p.column},
+    throw SceneError(skin::tomlSourceLocation(source_.name, key.source()),
                      fmt::format("key '{}' is not used by {}", k, variant));
   }
 }

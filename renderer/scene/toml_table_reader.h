@@ -43,7 +43,7 @@ struct TomlSource {
 };
 
 /// Position of a node in `source`.
-FileLocation locationOf(const TomlSource& source, const toml::node& node);
+SourceLocation locationOf(const TomlSource& source, const toml::node& node);
 /// SceneError's message without its "file:line:col: " prefix.
 std::string messageWithoutLocation(const SceneError& error);
 
@@ -56,8 +56,8 @@ class TomlTableReader {
 
   const std::string& label() const { return label_; }
   const TomlSource& source() const { return source_; }
-  FileLocation where() const;                             ///< the table's own position
-  FileLocation whereValue(const std::string& key) const;  ///< the value's, else the table's
+  SourceLocation where() const;                             ///< the table's own position
+  SourceLocation whereValue(const std::string& key) const;  ///< the value's, else the table's
   bool has(const std::string& key) const { return table_.get(key) != nullptr; }
 
   /// The node under `key` (nullptr if absent), marked as read.

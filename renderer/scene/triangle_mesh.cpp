@@ -20,12 +20,12 @@ struct IgnoreMaterials : tinyobj::MaterialReader {
   }
 };
 
-[[noreturn]] void fail(const FileLocation& where, const std::string& source, const std::string& what) {
+[[noreturn]] void fail(const SourceLocation& where, const std::string& source, const std::string& what) {
   throw SceneError(where, "mesh '" + source + "': " + what);
 }
 
 /// tinyobjloader reads "nan" or text as 0 without a word, so vertex lines are checked first.
-void checkNumbers(const std::string& text, const std::string& source, const FileLocation& where) {
+void checkNumbers(const std::string& text, const std::string& source, const SourceLocation& where) {
   std::istringstream lines(text);
   std::string line;
   for (int lineNumber = 1; std::getline(lines, line); ++lineNumber) {
@@ -82,7 +82,7 @@ void computeNormals(TriangleMesh& mesh) {
 
 }  // namespace
 
-TriangleMesh parseObjMesh(const std::string& objText, const std::string& source, const FileLocation& where,
+TriangleMesh parseObjMesh(const std::string& objText, const std::string& source, const SourceLocation& where,
                           bool smoothNormals) {
   checkNumbers(objText, source, where);
   tinyobj::attrib_t attrib;
@@ -171,7 +171,7 @@ TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
   return mesh;
 }
 
-TriangleMesh loadObjMesh(const std::filesystem::path& path, const FileLocation& where, bool smoothNormals) {
+TriangleMesh loadObjMesh(const std::filesystem::path& path, const SourceLocation& where, bool smoothNormals) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(where, "cannot open mesh file '" + path.string() + "'");
   std::ostringstream text;
@@ -193,7 +193,7 @@ TriangleMesh makePlaneMesh(const glm::dvec3& point, const glm::dvec3& normal, do
   return mesh;
 }
 
-void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld, const FileLocation& where) {
+void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld, const SourceLocation& where) {
   const glm::dmat3 linear(objectToWorld);
   const double det = glm::determinant(linear);
   if (!(std::fabs(det) > 1e-300) || !std::isfinite(det))

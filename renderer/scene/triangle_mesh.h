@@ -32,17 +32,17 @@ struct TriangleMesh {
 };
 
 /// Loads an OBJ file; `where` is the shape's position in the scene file (for errors).
-TriangleMesh loadObjMesh(const std::filesystem::path& path, const FileLocation& where, bool smoothNormals);
+TriangleMesh loadObjMesh(const std::filesystem::path& path, const SourceLocation& where, bool smoothNormals);
 /// Parses OBJ text (tests); `sourceName` appears in messages.
 TriangleMesh parseObjMesh(const std::string& objText, const std::string& sourceName,
-                          const FileLocation& where, bool smoothNormals);
+                          const SourceLocation& where, bool smoothNormals);
 
 /// A square of side `size` centred on `point` with normal `normal` (two triangles, uvs in [0, 1]²).
 TriangleMesh makePlaneMesh(const glm::dvec3& point, const glm::dvec3& normal, double size);
 
 /// Positions by `objectToWorld`, normals by its inverse transpose (renormalised). Throws SceneError
 /// at `where` for a singular transform.
-void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld, const FileLocation& where);
+void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld, const SourceLocation& where);
 
 /// Total area of the mesh's triangles (scene units²).
 double meshArea(const TriangleMesh& mesh);

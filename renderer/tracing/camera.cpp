@@ -1,10 +1,10 @@
 #include "renderer/tracing/camera.h"
+#include "skin/core/constants.h"
 
 #include <cmath>
 
 namespace hylios {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 /// Concentric mapping of the unit square onto the unit disk (Shirley & Chiu 1997).
 glm::dvec2 concentricDisk(double u, double v) {

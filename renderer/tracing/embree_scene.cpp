@@ -1,4 +1,5 @@
 #include "renderer/tracing/embree_scene.h"
+#include "skin/core/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@
 namespace hylios {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 void fatalEmbreeError(void*, RTCError code, const char* message) {
   std::fprintf(stderr, "hylios: fatal Embree error %d: %s\n", static_cast<int>(code),

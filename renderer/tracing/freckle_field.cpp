@@ -10,7 +10,7 @@ namespace {
 double hashUniform(std::uint64_t h) { return static_cast<double>(skin::mix64(h) >> 11) * 0x1.0p-53; }
 }  // namespace
 
-FreckleField::FreckleField(const SkinMaterialDesc::Freckles& desc, const FileLocation& where)
+FreckleField::FreckleField(const SkinMaterialDesc::Freckles& desc, const SourceLocation& where)
     : densityPerCm2_(desc.densityPerCm2), radiusCm_(desc.radiusCm), gain_(desc.melaninGain), seed_(desc.seed) {
   if (!(densityPerCm2_ >= 0) || !std::isfinite(densityPerCm2_))
     throw SceneError(where, "freckle density must be a finite number >= 0");

@@ -20,7 +20,7 @@ namespace hylios {
 class FreckleField {
  public:
   /// Throws SceneError at `where` for a negative density or gain or a non-positive radius.
-  FreckleField(const SkinMaterialDesc::Freckles& desc, const FileLocation& where);
+  FreckleField(const SkinMaterialDesc::Freckles& desc, const SourceLocation& where);
 
   bool empty() const { return !(densityPerCm2_ > 0); }
   /// The melanin multiplier at a point in cm (1 away from freckles).

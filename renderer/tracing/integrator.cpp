@@ -15,24 +15,26 @@
 #include "skin/sampling/cosine_sampling.h"
 #include "skin/fresnel.h"
 #include "skin/core/vector3.h"
+#include "renderer/tracing/surface_vectors.h"
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kTileSize = 16;
+/// A spawned ray starts this far off its surface, times max(1, |x|, |y|, |z|) of the point: far
+/// above the single-precision error of a hit there (about 6e-8 of that magnitude).
+constexpr double kRelativeRayOffset = 1e-5;
 
 double powerHeuristic(double pdfA, double pdfB) {
   const double a = pdfA * pdfA, b = pdfB * pdfB;
   return a + b > 0 ? a / (a + b) : 0.0;
 }
 
-glm::dvec3 toGlm(const skin::Vec3& v) { return {v.x, v.y, v.z}; }
-
 /// A cosine-distributed direction about unit `normal`.
 glm::dvec3 sampleCosine(const glm::dvec3& normal, skin::Rng& rng) {
   const double u1 = rng.uniform(), u2 = rng.uniform();
-  const skin::Frame frame({normal.x, normal.y, normal.z});
+  const skin::Frame frame(toSkin(normal));
   return glm::normalize(toGlm(frame.toWorld(skin::sampleCosineHemisphere(u1, u2))));
 }
 
@@ -55,45 +57,16 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
   if (!(scene.unitCm > 0) || !std::isfinite(scene.unitCm)) throw SceneError({scene.file.string(), 0, 0}, "unit_cm must be > 0");
   camera_ = std::make_unique<Camera>(scene.camera, scene.film.width, scene.film.height);
   geometry_ = std::make_unique<EmbreeScene>(scene);
-  rayOffset_ = 1e-5 * std::max(1.0, geometry_->sceneExtent());
+  // Relative to the spawning point's own magnitude (spawn()): a far or huge shape elsewhere in the
+  // scene must not push every ray off the surfaces near the origin (issue 13, row 2).
+  rayOffset_ = kRelativeRayOffset;
   lights_ = std::make_unique<LightSet>(scene, *geometry_, channelWavelengths);
   bool anySkin = false;
   for (const auto& m : scene.materials) anySkin = anySkin || m.kind == MaterialDesc::Kind::Skin;
   std::unique_ptr<skin::SpectralDatabase> spectra;
   if (anySkin) spectra = std::make_unique<skin::SpectralDatabase>(skin::SpectralDatabase::load(spectraDir()));
-  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-    const MaterialDesc& desc = scene.materials[i];
-    Material m;
-    m.kind = desc.kind;
-    switch (desc.kind) {
-      case MaterialDesc::Kind::Diffuse:
-        for (double w : channelWavelengths) {
-          const double rho = evaluateEmission(desc.reflectance, w);
-          if (!(rho >= 0 && rho <= 1))
-            throw SceneError(desc.reflectance.where, "diffuse reflectance must lie in [0, 1]; it is " +
-                                                         std::to_string(rho) + " at " + std::to_string(w) + " nm");
-          m.reflectance.push_back(rho);
-        }
-        break;
-      case MaterialDesc::Kind::Dielectric:
-        if (desc.roughness != 0)
-          throw SceneError(desc.where, "only smooth dielectrics (roughness = 0) are implemented");
-        if (!(desc.refractiveIndex > 0) || !std::isfinite(desc.refractiveIndex))
-          throw SceneError(desc.where, "refractive index must be a positive number");
-        m.refractiveIndex = desc.refractiveIndex;
-        break;
-      case MaterialDesc::Kind::Skin: {
-        bool used = false;
-        for (const auto& s : scene.shapes) used = used || s.material == desc.name;
-        if (!used) break;  // only the skin that the scene shows is prepared
-        const skin::Specimen specimen = loadMaterialSpecimen(desc, specimenDir());
-        m.skin = std::make_unique<SkinMaterial>(desc, specimen, i, scene.unitCm, channelWavelengths, *spectra,
-                                                scene.integrator.skinMode, scene.integrator.effectTolerance);
-        break;
-      }
-    }
-    materials_.push_back(std::move(m));
-  }
+  for (std::size_t i = 0; i < scene.materials.size(); ++i)
+    materials_.push_back(makeMaterial(scene, i, channelWavelengths, spectra.get()));
   for (const ShapeDesc& shape : scene.shapes) {
     std::size_t index = scene.materials.size();
     for (std::size_t i = 0; i < scene.materials.size(); ++i)
@@ -101,6 +74,42 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
     if (index == scene.materials.size()) throw SceneError(shape.where, "unknown material '" + shape.material + "'");
     materialOfShape_.push_back(index);
   }
+}
+
+Integrator::Material Integrator::makeMaterial(const SceneDesc& scene, std::size_t index,
+                                              const std::vector<double>& channelWavelengths,
+                                              const skin::SpectralDatabase* spectra) {
+  const MaterialDesc& desc = scene.materials[index];
+  Material m;
+  m.kind = desc.kind;
+  switch (desc.kind) {
+    case MaterialDesc::Kind::Diffuse:
+      for (double w : channelWavelengths) {
+        const double rho = evaluateEmission(desc.reflectance, w);
+        if (!(rho >= 0 && rho <= 1))
+          throw SceneError(desc.reflectance.where, "diffuse reflectance must lie in [0, 1]; it is " +
+                                                       std::to_string(rho) + " at " + std::to_string(w) + " nm");
+        m.reflectance.push_back(rho);
+      }
+      break;
+    case MaterialDesc::Kind::Dielectric:
+      if (desc.roughness != 0)
+        throw SceneError(desc.where, "only smooth dielectrics (roughness = 0) are implemented");
+      if (!(desc.refractiveIndex > 0) || !std::isfinite(desc.refractiveIndex))
+        throw SceneError(desc.where, "refractive index must be a positive number");
+      m.refractiveIndex = desc.refractiveIndex;
+      break;
+    case MaterialDesc::Kind::Skin: {
+      bool used = false;
+      for (const auto& s : scene.shapes) used = used || s.material == desc.name;
+      if (!used) break;  // only the skin that the scene shows is prepared
+      const skin::Specimen specimen = loadMaterialSpecimen(desc, specimenDir());
+      m.skin = std::make_unique<SkinMaterial>(desc, specimen, index, scene.unitCm, channelWavelengths, *spectra,
+                                              scene.integrator.skinMode, scene.integrator.effectTolerance);
+      break;
+    }
+  }
+  return m;
 }
 
 Integrator::~Integrator() = default;
@@ -149,6 +158,25 @@ double Integrator::directLight(const glm::dvec3& point, const glm::dvec3& geomet
   return f * light->value * weight / light->pdf;
 }
 
+Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit, skin::Rng& rng,
+                                  double& beta) const {
+  const glm::dvec3 ng = hit.geometricNormal;
+  const bool backFace = glm::dot(ray.direction, ng) > 0;
+  const double cosIn = std::fabs(glm::dot(ray.direction, ng));
+  const double nFrom = backFace ? refractiveIndex : 1.0, nTo = backFace ? 1.0 : refractiveIndex;
+  const glm::dvec3 facing = backFace ? -ng : ng;
+  const skin::FresnelResult fr = skin::fresnel(cosIn, nFrom, nTo);
+  glm::dvec3 direction;
+  if (rng.uniform() < fr.reflectance) {
+    direction = ray.direction + facing * (2 * cosIn);
+  } else {
+    direction = toGlm(skin::refractDirection(toSkin(ray.direction), toSkin(facing), nFrom, nTo, fr.cosTransmitted));
+    beta *= (nFrom / nTo) * (nFrom / nTo);
+  }
+  direction = glm::normalize(direction);
+  return spawn(hit.position, facing, direction, std::numeric_limits<double>::infinity());
+}
+
 double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng& rng, RenderStats& stats) const {
   ++stats.paths;
   const int maxDepth = scene_.integrator.maxDepth;
@@ -172,33 +200,14 @@ double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng
     }
     if (depth >= maxDepth) break;
     const Material& material = materials_[materialOfShape_[hit->shape]];
-    // Normals on the side the ray arrives from.
-    glm::dvec3 ng = hit->geometricNormal, ns = hit->shadingNormal;
-    const bool backFace = glm::dot(ray.direction, ng) > 0;
     if (material.kind == MaterialDesc::Kind::Dielectric) {
-      const double cosIn = std::fabs(glm::dot(ray.direction, ng));
-      const double nFrom = backFace ? material.refractiveIndex : 1.0, nTo = backFace ? 1.0 : material.refractiveIndex;
-      const glm::dvec3 facing = backFace ? -ng : ng;
-      const skin::FresnelResult fr = skin::fresnel(cosIn, nFrom, nTo);
-      glm::dvec3 direction;
-      if (rng.uniform() < fr.reflectance) {
-        direction = ray.direction + facing * (2 * cosIn);
-      } else {
-        const skin::Vec3 d = skin::refractDirection({ray.direction.x, ray.direction.y, ray.direction.z},
-                                                    {facing.x, facing.y, facing.z}, nFrom, nTo, fr.cosTransmitted);
-        direction = toGlm(d);
-        beta *= (nFrom / nTo) * (nFrom / nTo);
-      }
-      direction = glm::normalize(direction);
-      ray = spawn(hit->position, facing, direction, std::numeric_limits<double>::infinity());
+      ray = scatterDielectric(material.refractiveIndex, ray, *hit, rng, beta);
       lastSpecular = true;
       continue;
     }
-    if (backFace) {
-      ng = -ng;
-      ns = -ns;
-    }
-    if (!(glm::dot(ray.direction, ns) < 0)) ns = ng;
+    // Normals on the side the ray arrives from.
+    const FacingNormals facing = faceTheRay(ray.direction, hit->geometricNormal, hit->shadingNormal);
+    glm::dvec3 ng = facing.geometric, ns = facing.shading;
     glm::dvec3 point = hit->position;
     if (material.kind == MaterialDesc::Kind::Skin) {
       ++stats.skinWalks;

@@ -113,6 +113,14 @@ class Integrator {
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
   void renderPass(Film& film, int firstSample, int endSample, RenderStats& total, RenderProgress* progress) const;
   Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction, double tMax) const;
+  /// A smooth dielectric of index `refractiveIndex` at `hit`: Fresnel-chosen mirror reflection or
+  /// refraction (beta takes the radiance scaling (n_from/n_to)²); the continued ray.
+  Ray scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit, skin::Rng& rng,
+                        double& beta) const;
+  /// The material `index` of `scene` prepared for the channel wavelengths (skin: its walks or tables,
+  /// only when a shape shows it). `spectra` may be null when the scene has no skin.
+  static Material makeMaterial(const SceneDesc& scene, std::size_t index, const std::vector<double>& channelWavelengths,
+                               const skin::SpectralDatabase* spectra);
 
   SceneDesc scene_;
   std::vector<double> wavelengths_;

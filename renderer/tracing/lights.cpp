@@ -5,10 +5,10 @@
 #include <limits>
 
 #include "renderer/scene/emission_spectrum.h"
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry, const std::vector<double>& channelWavelengths)

@@ -1,12 +1,12 @@
 #include "renderer/tracing/render_job.h"
 
-#include <tbb/global_control.h>
 
 #include <chrono>
 #include <ostream>
 #include <stdexcept>
 
 #include "renderer/tracing/exit_table_cache.h"
+#include "skin/core/thread_limit.h"
 
 namespace hylios {
 
@@ -24,10 +24,7 @@ SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings) {
 }
 
 RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings, std::ostream* log) {
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (settings.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                        static_cast<std::size_t>(settings.threads));
+  const ThreadLimit threadLimit(settings.threads);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   RenderResult result;
@@ -48,7 +45,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   if (settings.explain && log) *log << integrator.effectPlanReport();
   if (settings.resumeFrom) {
     const RenderCheckpoint& saved = *settings.resumeFrom;
-    result.film->restoreState(saved.sums, saved.counts, saved.samplesPerPixelDone);
+    result.film->restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts, saved.samplesPerPixelDone);
     result.samplesPerPixelAtStart = saved.samplesPerPixelDone;
     if (log) *log << "continuing from " << saved.samplesPerPixelDone << " of " << scene.film.samplesPerPixel << " spp\n";
   }

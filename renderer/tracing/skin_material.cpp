@@ -6,16 +6,14 @@
 
 #include "skin/sampling/surface_normal_sampling.h"
 #include "skin/core/vector3.h"
+#include "renderer/tracing/surface_vectors.h"
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kLobeTableSize = 65;
 constexpr int kLobeTableStrata = 96;  // stratified facet normals per table entry (per dimension)
-
-skin::Vec3 toSkin(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-glm::dvec3 toGlm(const skin::Vec3& v) { return {v.x, v.y, v.z}; }
 
 /// Facet-normal density per steradian about the macro normal: P_s(θ)/(2π sinθ).
 double facetDensityPerSr(double s, double cosTheta) {
@@ -121,12 +119,8 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
                                   const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
                                   skin::Rng& rng) const {
   // Normals facing the arriving ray (a back-face hit is treated as skin seen from outside).
-  glm::dvec3 ng = hit.geometricNormal, ns = hit.shadingNormal;
-  if (glm::dot(direction, ng) > 0) {
-    ng = -ng;
-    ns = -ns;
-  }
-  if (!(glm::dot(direction, ns) < 0)) ns = ng;  // the ray is below the shading hemisphere
+  const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
+  const glm::dvec3 &ng = normals.geometric, &ns = normals.shading;
   const skin::Frame frame(toSkin(-ns));         // z into the skin
   const skin::Vec3 incident = frame.toLocal(toSkin(direction));
   const double multiplier = melaninMultiplier(hit);

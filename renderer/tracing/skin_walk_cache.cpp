@@ -36,7 +36,7 @@ skin::Specimen scaleMelanin(const skin::Specimen& specimen, double multiplier) {
 
 SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
                              const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
-                             const FileLocation& where, int levels, double effectTolerance)
+                             const SourceLocation& where, int levels, double effectTolerance)
     : lo_(std::min(minMultiplier, maxMultiplier)), hi_(std::max(minMultiplier, maxMultiplier)),
       levels_(hi_ > lo_ ? levels : 1), channels_(channelWavelengths.size()), effectTolerance_(effectTolerance) {
   if (!(effectTolerance >= 0 && effectTolerance <= 1))

@@ -47,7 +47,7 @@ class SkinWalkCache {
   /// `effectTolerance` is the planner's ε in [0, 1] (0: every process simulated).
   SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
                 const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
-                const FileLocation& where, int levels = kMelaninLevels,
+                const SourceLocation& where, int levels = kMelaninLevels,
                 double effectTolerance = skin::kDefaultEffectTolerance);
 
   /// Pilot rays per melanin end level and incidence of the effect planner.

@@ -1,5 +1,7 @@
 #include "skin/core/atomic_file.h"
 
+#include <atomic>
+#include <cstdint>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
@@ -9,8 +11,11 @@ namespace hylios {
 
 void writeAtomically(const std::filesystem::path& path,
                      const std::function<void(const std::filesystem::path& tmpPath)>& write) {
+  // pid and a per-process counter: threads (or processes) writing the same path never share a
+  // temporary file; the last rename wins with a complete file.
+  static std::atomic<std::uint64_t> counter{0};
   std::filesystem::path tmp = path;
-  tmp += ".tmp-" + std::to_string(::getpid());
+  tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   try {
     write(tmp);
   } catch (...) {

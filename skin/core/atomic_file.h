@@ -1,4 +1,5 @@
-// Output files are written whole or not at all: write to "<path>.tmp-<pid>" then rename.
+// Output files are written whole or not at all: write to "<path>.tmp-<pid>-<n>" then rename.
+// Used for every file the project writes (CSVs, images, checkpoints, exit-table caches).
 #pragma once
 #include <filesystem>
 #include <functional>

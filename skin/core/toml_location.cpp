@@ -1,19 +1,16 @@
 #include "skin/core/toml_location.h"
 
-#include <fmt/format.h>
-
 namespace hylios::skin {
 
-TomlPosition tomlPosition(const toml::source_region& region) {
-  TomlPosition position;
-  if (region.begin.line != 0) position.line = static_cast<int>(region.begin.line);
-  if (region.begin.column != 0) position.column = static_cast<int>(region.begin.column);
-  return position;
+SourceLocation tomlSourceLocation(const std::string& source, const toml::source_region& region) {
+  SourceLocation location{source, 1, 1};
+  if (region.begin.line != 0) location.line = static_cast<int>(region.begin.line);
+  if (region.begin.column != 0) location.column = static_cast<int>(region.begin.column);
+  return location;
 }
 
 std::string tomlLocation(const std::string& source, const toml::source_region& region) {
-  const TomlPosition p = tomlPosition(region);
-  return fmt::format("{}:{}:{}", source, p.line, p.column);
+  return tomlSourceLocation(source, region).str();
 }
 
 std::string_view tomlTypeName(toml::node_type type) {

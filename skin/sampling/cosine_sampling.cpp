@@ -3,11 +3,11 @@
 #include <cmath>
 
 #include "skin/sampling/uniform_sample_check.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 constexpr double kHalfPi = 1.57079632679489661923;
-constexpr double kTwoPi = 6.28318530717958647693;
 }  // namespace
 
 double sampleCosinePolar(double u) {

@@ -6,11 +6,11 @@
 
 #include "skin/sampling/bracketed_newton.h"
 #include "skin/sampling/uniform_sample_check.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 void requireMeanAngle(double meanAngleRad, bool allowZero, const char* where) {
   const bool zeroOk = allowZero && meanAngleRad == 0.0;

@@ -5,11 +5,11 @@
 #include <string>
 
 #include "skin/sampling/uniform_sample_check.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647693;
 
 void requireUnitDirection(const Vec3& d, const char* where) {
   const double lengthSquared = dot(d, d);

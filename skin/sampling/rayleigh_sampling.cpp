@@ -4,12 +4,9 @@
 #include <cmath>
 
 #include "skin/sampling/uniform_sample_check.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
-
 double sampleRayleighCos(double u) {
   requireUniformSample(u, "sampleRayleighCos");
   // F(μ) = (μ³ + 3μ + 4)/8 = u  <=>  μ³ + 3μ = 2w with w = 4u − 2 in [−2, 2).

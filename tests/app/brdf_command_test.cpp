@@ -13,6 +13,9 @@
 #include "tests/support/scratch_csv.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios {
 namespace {
@@ -52,7 +55,7 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
     surfaceReflectance += std::stod(rows[r][surface]) * std::stod(rows[r][omega]);
     solidAngle += std::stod(rows[r][omega]);
   }
-  EXPECT_NEAR(solidAngle, 2 * M_PI, 1e-4);  // printed with 6 significant digits
+  EXPECT_NEAR(solidAngle, 2 * kPi, 1e-4);  // printed with 6 significant digits
   // The same walk through the library (same seed, same wavelength stream).
   const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
   const auto spectra = skin::SpectralDatabase::load(spectraDir());

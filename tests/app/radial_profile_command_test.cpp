@@ -10,6 +10,9 @@
 #include "tests/support/scratch_csv.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios {
 namespace {
@@ -40,7 +43,7 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
     ASSERT_EQ(rows[r].size(), header.size());
     const double inner = std::stod(rows[r][0]), outer = std::stod(rows[r][1]);
     EXPECT_NEAR(inner, 0.1 * static_cast<double>(r - 1), 1e-9);
-    EXPECT_NEAR(std::stod(rows[r][2]), M_PI * (outer * outer - inner * inner), 1e-5 * outer * outer);
+    EXPECT_NEAR(std::stod(rows[r][2]), kPi * (outer * outer - inner * inner), 1e-5 * outer * outer);
     subsurface += std::stod(rows[r][columnOf(header, "reflectance_per_cm2")]) * std::stod(rows[r][2]);
   }
   const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());

@@ -19,6 +19,9 @@
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
 #include "tests/support/test_spectra.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 using namespace hylios::skin;
 
@@ -107,7 +110,7 @@ TEST(EffectPlan, OpticalDepthOfOneAbsorberMatchesBeerLambert) {
     const EffectPlan plan = planEffects(singleAbsorbingLayer(mu, d), 0.3, options);
     ASSERT_EQ(plan.effects.size(), 1u);  // no roughness, nothing else nonzero
     const PlannedEffect& e = plan.effects.front();
-    const double expected = 1 - std::exp(-mu * d / std::cos(angle * M_PI / 180));
+    const double expected = 1 - std::exp(-mu * d / std::cos(angle * kPi / 180));
     // μℓ is in [0, μd/cos]; its standard deviation is < 0.45 for these laws, so σ(τ) < 0.45/√4000 ≈ 0.0071.
     EXPECT_NEAR(e.opticalDepth, expected, 4 * 0.0071) << angle;
     // τ⁺ is τ + 3 s.e., capped by the bound on entering the layer (every ray enters: ≤ 1).

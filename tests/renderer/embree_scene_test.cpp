@@ -17,7 +17,7 @@ using namespace hylios;
 
 namespace {
 
-const FileLocation kWhere{"scene.toml", 12, 3};
+const SourceLocation kWhere{"scene.toml", 12, 3};
 
 std::string sceneErrorOf(const std::string& obj) {
   try {

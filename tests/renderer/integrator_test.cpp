@@ -4,7 +4,6 @@
 #include "renderer/tracing/integrator.h"
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 
@@ -12,12 +11,15 @@
 #include "skin/sampling/cosine_sampling.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_walk.h"
+#include "skin/core/constants.h"
+#include "skin/core/thread_limit.h"
+
+using hylios::kPi;
 
 using namespace hylios;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 EmissionDesc constant(double value) {
   EmissionDesc e;
@@ -211,11 +213,11 @@ TEST(Integrator, SameSeedSameImageAtOneAndTwoThreads) {
   const Integrator integrator(scene, {365, 550});
   Film one(scene.film), two(scene.film);
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    const hylios::ThreadLimit limit(1);
     integrator.render(one, quietRenderOptions("1"));
   }
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    const hylios::ThreadLimit limit(2);
     integrator.render(two, quietRenderOptions("2"));
   }
   double total = 0;

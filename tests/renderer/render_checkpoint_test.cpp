@@ -6,7 +6,6 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <fstream>
@@ -15,6 +14,7 @@
 #include "renderer/image/film_output.h"
 #include "renderer/tracing/integrator.h"
 #include "renderer/scene/scene_file.h"
+#include "skin/core/thread_limit.h"
 
 using namespace hylios;
 namespace fs = std::filesystem;
@@ -55,9 +55,10 @@ const Integrator& integrator() {
 }
 
 Film render(int threads, int samplesPerPass, int stopAfterPasses = -1, Film* resumeFrom = nullptr) {
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  const hylios::ThreadLimit limit(threads);
   Film film(testScene().film);
-  if (resumeFrom) film.restoreState(resumeFrom->sums(), resumeFrom->counts(), resumeFrom->samplesPerPixelDone());
+  if (resumeFrom) film.restoreState(resumeFrom->sums(), resumeFrom->counts(), resumeFrom->oddSums(), resumeFrom->oddCounts(),
+                                   resumeFrom->samplesPerPixelDone());
   RenderOptions options;
   options.samplesPerPass = samplesPerPass;
   int passes = 0;
@@ -164,7 +165,7 @@ TEST(RenderCheckpoint, StoppedRenderContinuedFromItsCheckpointEqualsUninterrupte
     const RenderCheckpoint saved = readMatchingCheckpoint(state, identity());
     EXPECT_EQ(saved.samplesPerPixelDone, 6);
     Film restored(testScene().film);
-    restored.restoreState(saved.sums, saved.counts, saved.samplesPerPixelDone);
+    restored.restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts, saved.samplesPerPixelDone);
     const Film continued = render(3 - threads, 0, -1, &restored);
     expectSameFilm(continued, reference());
   }
@@ -202,9 +203,9 @@ TEST(RenderCheckpoint, DamagedFilesAreRefusedSayingWhy) {
   writeBytes(state, "P6\n24 24\n255\n" + good.substr(13));
   EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("not a hylios render checkpoint"), std::string::npos);
   std::string version = good;
-  version[25] = 2;  // the u32 after the 25-byte magic
+  version[25] = 3;  // the u32 after the 25-byte magic
   writeBytes(state, version);
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("format version 2"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("format version 3"), std::string::npos);
   writeBytes(state, good);
   EXPECT_EQ(readRenderCheckpoint(state).samplesPerPixelDone, 5);
 }
@@ -247,14 +248,17 @@ TEST(FilmRestoreState, RejectsStateThatDoesNotFit) {
   const Film& whole = reference();
   Film film(testScene().film);
   std::vector<std::uint32_t> counts = whole.counts();
-  EXPECT_THROW(film.restoreState(whole.sums(), counts, kSpp - 1), std::invalid_argument);  // counts add up to 12
+  EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp - 1), std::invalid_argument);  // counts add up to 12
   counts[5] += 1;
-  EXPECT_THROW(film.restoreState(whole.sums(), counts, kSpp), std::invalid_argument);
+  EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp), std::invalid_argument);
   std::vector<double> sums = whole.sums();
   sums[3] = std::nan("");
-  EXPECT_THROW(film.restoreState(sums, whole.counts(), kSpp), std::invalid_argument);
+  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp), std::invalid_argument);
   sums.pop_back();
-  EXPECT_THROW(film.restoreState(sums, whole.counts(), kSpp), std::invalid_argument);
-  film.restoreState(whole.sums(), whole.counts(), kSpp);
+  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp), std::invalid_argument);
+  std::vector<std::uint32_t> odd = whole.oddCounts();
+  odd[7] = whole.counts()[7] + 1;  // more odd samples than samples
+  EXPECT_THROW(film.restoreState(whole.sums(), whole.counts(), whole.oddSums(), odd, kSpp), std::invalid_argument);
+  film.restoreState(whole.sums(), whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp);
   expectSameFilm(film, whole);
 }

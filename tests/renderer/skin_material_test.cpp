@@ -12,12 +12,14 @@
 #include "renderer/scene/texture_map.h"
 #include "skin/core/random.h"
 #include "tests/support/test_spectra.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 using namespace hylios;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 MaterialDesc skinDesc() {
   MaterialDesc m;

@@ -10,11 +10,13 @@
 
 #include "skin/core/random.h"
 #include "tests/support/chi2.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(CosineSampling, InversionByHand) {
   // F(θ) = sin²θ: u = 1/4 -> θ = π/6, u = 1/2 -> θ = π/4, u = 0 -> θ = 0.

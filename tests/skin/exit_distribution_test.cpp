@@ -11,12 +11,14 @@
 #include "skin/sampling/cosine_sampling.h"
 #include "skin/fresnel.h"
 #include "skin/skin_simulation.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 using namespace hylios::skin;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// Every layer clear with index n, each `thicknessCm` thick.
 SkinOptics clearOptics(double n, double thicknessCm = 0.01) {

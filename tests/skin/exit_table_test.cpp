@@ -4,7 +4,6 @@
 #include "skin/exit_table.h"
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <fstream>
@@ -16,13 +15,16 @@
 #include "skin/specimen.h"
 #include "tests/support/chi2.h"
 #include "tests/support/test_spectra.h"
+#include "skin/core/constants.h"
+#include "skin/core/thread_limit.h"
+
+using hylios::kPi;
 
 using namespace hylios;
 using namespace hylios::skin;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 using hylios::test::spectra;
 
@@ -227,7 +229,7 @@ TEST(ExitTableFile, BuildIsTheSameAtAnyThreadCountAndRoundTrips) {
   settings.raysPerBin = 5000;  // 3 chunks per bin
   const auto one = scratch("one.hxt"), two = scratch("two.hxt");
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    const hylios::ThreadLimit limit(1);
     ExitTable::build(walk, settings).write(one);
   }
   const ExitTable table = ExitTable::build(walk, settings);

@@ -13,11 +13,13 @@
 
 #include "skin/core/random.h"
 #include "tests/support/chi2.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
 /// Where the density lives: beyond 80θo the mass is < 81·e^{−80} ≈ 1e-33.

@@ -1,14 +1,16 @@
 // Fresnel reflectance and the reflect/refract helpers against hand-computed values.
 #include "skin/fresnel.h"
+#include "skin/core/constants.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+using hylios::kPi;
+
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(FresnelTest, NormalIncidenceIsSquaredIndexContrast) {
   // ((n1 - n2) / (n1 + n2))^2: air -> glass (1.5) gives (0.5 / 2.5)^2 = 0.04.

@@ -4,7 +4,6 @@
 #include "skin/layered_slab.h"
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <cstdio>
@@ -16,12 +15,15 @@
 #include <vector>
 
 #include "skin/fresnel.h"
+#include "skin/core/constants.h"
+#include "skin/core/thread_limit.h"
+
+using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 // Photons per published-benchmark run (13 runs, ~1.5 s in Release on 2 cores): analog sigma is
 // sqrt(p (1 - p) / N), e.g. 3.0e-4 for Rd ~ 0.1, 4.7e-4 for Tt ~ 0.66, 4.3e-4 for Rd ~ 0.24
 // (the test prints every row's sigma).
@@ -445,7 +447,7 @@ TEST(LayeredSlabTest, ResultIsIdenticalAtOneAndTwoThreadsAndAcrossRuns) {
   options.photons = 30000;  // several chunks
   options.seed = 12;
   auto run = [&](int threads) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const hylios::ThreadLimit limit(threads);
     return simulateLayeredSlab(mcmlThreeLayerSample(), options);
   };
   const SlabResult one = run(1), two = run(2), again = run(2);

@@ -11,11 +11,13 @@
 
 #include "skin/core/random.h"
 #include "tests/support/chi2.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 const ProlateSpheroid kTableOneMelanosome{0.085, 0.205};  // 0.17 × 0.41 µm full axes (Table 1)
 const ProlateSpheroid kSphere{0.1, 0.1};

@@ -12,11 +12,13 @@
 #include "skin/sampling/exponential_polar_sampling.h"
 #include "skin/sampling/surface_normal_sampling.h"
 #include "tests/support/chi2.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kHalfPi = 0.5 * kPi;
 constexpr int kSamples = 200000;
 

@@ -10,11 +10,13 @@
 
 #include "skin/core/random.h"
 #include "tests/support/chi2.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(RayleighSampling, InversionByHand) {
   // F(μ) = (μ³ + 3μ + 4)/8: F(0) = 1/2, F(0.5) = (0.125 + 1.5 + 4)/8 = 0.703125,

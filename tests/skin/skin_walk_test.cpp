@@ -2,7 +2,6 @@
 #include "skin/skin_walk.h"
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 
@@ -12,6 +11,10 @@
 #include "skin/sampling/melanosome_orientation_sampling.h"
 #include "skin/skin_simulation.h"
 #include "skin/spheroid_intersection.h"
+#include "skin/core/constants.h"
+#include "skin/core/thread_limit.h"
+
+using hylios::kPi;
 
 using namespace hylios::skin;
 
@@ -95,7 +98,7 @@ TEST(SkinWalk, EnergyIsAccountedForWithEveryProcess) {
   auto& basale = optics.layers[index(Layer::StratumBasale)];
   basale.melanosome = {0.085e-4, 0.205e-4, true, 0.41e-4, 4.8, 300.0};
   optics.melanosomeInteriorMuA_perCm = 2000;
-  optics.meanScatteringAngleRad = 5.0 * M_PI / 180.0;
+  optics.meanScatteringAngleRad = 5.0 * kPi / 180.0;
   optics.layers[index(Layer::PapillaryDermis)].muRayleigh_perCm = 2500;
   const SkinTally t = run(optics, WalkOptions{}, 45, 20000);
   EXPECT_DOUBLE_EQ(t.reflectance().mean + t.transmittance().mean + t.absorptance().mean +
@@ -113,11 +116,11 @@ TEST(SkinWalk, SameSeedSameResultAtAnyThreadCount) {
   optics.layers[index(Layer::PapillaryDermis)].muRayleigh_perCm = 2500;
   SkinTally one, two;
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    const hylios::ThreadLimit limit(1);
     one = run(optics, WalkOptions{}, 30, 30000);
   }
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    const hylios::ThreadLimit limit(2);
     two = run(optics, WalkOptions{}, 30, 30000);
   }
   EXPECT_EQ(one.reflectance().mean, two.reflectance().mean);

@@ -11,11 +11,13 @@
 
 #include "skin/core/random.h"
 #include "tests/support/chi2.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// x²/a² + y²/a² + z²/c² in the body frame, computed from the axis without the library's frame.
 double normalisedRadiusSquared(const ProlateSpheroid& s, const Vec3& axis, const Vec3& p) {

@@ -1,15 +1,17 @@
 // Prolate spheroid geometry (Eq. 7): hand values, the sphere limit, and degenerate inputs.
 #include "skin/spheroid.h"
+#include "skin/core/constants.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
+using hylios::kPi;
+
 namespace hylios::skin {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(Spheroid, SurfaceToVolumeHandValueForLightMelanosome) {
   // a = 0.085 µm, c = 0.205 µm (half of Table 1's 0.17 × 0.41 µm).

@@ -21,6 +21,9 @@
 #include "skin/spheroid_intersection.h"
 #include "skin/sampling/surface_normal_sampling.h"
 #include "tests/support/test_spectra.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 using namespace hylios::skin;
 
@@ -66,7 +69,7 @@ TEST(HardCases, GrazingIncidence89_9Degrees) {
 TEST(HardCases, FromInsideBeyondTheCriticalAngle) {
   // Leaving the stratum corneum (1.55) at 70° from the normal; the critical angle is 40.2°.
   Rng rng(3);
-  const Vec3 d = normalize(Vec3{std::sin(70 * M_PI / 180), 0, -std::cos(70 * M_PI / 180)});
+  const Vec3 d = normalize(Vec3{std::sin(70 * kPi / 180), 0, -std::cos(70 * kPi / 180)});
   int reflected = 0;
   for (int i = 0; i < 20000; ++i) {
     const InterfaceCrossing c = crossRoughSurface(d, 1.55, 1.0, 0.1, rng);
