@@ -14,5 +14,6 @@ void registerRadialProfileCommand(CLI::App& app);   // radial_profile_command.cp
 void registerRenderCommand(CLI::App& app);          // render_command.cpp
 void registerFigureCommand(CLI::App& app);          // figure_command.cpp
 void registerImageDiffCommand(CLI::App& app);       // image_diff_command.cpp
+void registerFitCommand(CLI::App& app);             // fit_command.cpp
 
 }  // namespace hylios

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   hylios::registerRenderCommand(app);
   hylios::registerFigureCommand(app);
   hylios::registerImageDiffCommand(app);
+  hylios::registerFitCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
