@@ -5,7 +5,7 @@
 # sheet, at a modest resolution (pass e.g. --resolution 512x512 --spp 64 for the full one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+HYLIOS_TARGET=hylios bash scripts/build.sh  # only what the render needs (no tests, benchmarks)
 ./build/hylios figure scenes/figure01_uv365.toml scenes/figure01_visible.toml scenes/figure01_ir1100.toml \
   --out out/figure01 --resolution 256x256 --spp 32 "$@"
 echo "open out/figure01/contact_sheet.png"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds hylios (installing dependencies as needed) and runs the whole test suite with CTest.
+# Builds everything (installing dependencies as needed) and runs the whole test suite with CTest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh "$@"
