@@ -8,7 +8,7 @@ find_package(CLI11 REQUIRED)
 find_package(embree 3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(tinyobjloader REQUIRED)
-# OpenImageIO 2.4's CMake package drags in opencv include paths; its .pc file does not (DESIGN.md §7).
+# OpenImageIO 2.4's CMake package drags in opencv include paths; its .pc file does not (docs/architecture.md).
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OPENEXR REQUIRED IMPORTED_TARGET OpenEXR)
 if(HYLIOS_BUILD_TESTS)

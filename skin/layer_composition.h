@@ -9,7 +9,7 @@
 //   mg/mL            — DNA, β-carotene, melanins, hemoglobins, bilirubin
 //   mol/L            — urocanic acid
 //
-// Per layer (DESIGN.md §3):
+// Per layer (the paper's Table 2; choices in docs/interpretations.md):
 //   stratum corneum       keratin, water, lipid, urocanic acid, β-carotene (SC), DNA
 //   granulosum/spinosum/  water, lipid, β-carotene (epidermis), DNA, colloidal melanin:
 //   basale                  eumelanin = f_colloidal · c_eu, pheomelanin = f_colloidal · c_pheo

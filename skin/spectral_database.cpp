@@ -15,12 +15,12 @@
 #include "skin/piecewise_spectrum.h"
 #include "skin/spectral_extensions.h"
 #include "skin/spectral_table.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 
 const double kLn10 = std::log(10.0);
-constexpr double kPi = 3.14159265358979323846;
 using TablePtr = std::shared_ptr<const SpectralTable>;
 
 TablePtr loadTable(const std::filesystem::path& dir, const char* file,

@@ -1,6 +1,6 @@
 // The HyLIoS skin material: at a camera-path hit on skin, the paper's random walk (skin/skin_walk.h)
 // simulates both the rough-surface reflection and the subsurface transport, and its outcome drives
-// the path (paper Sec. 4; DESIGN.md §5).
+// the path (paper Sec. 4; docs/architecture.md, "Data flow").
 //
 // | parameter (MaterialDesc::skin)  | meaning                                                      |
 // |---------------------------------|--------------------------------------------------------------|

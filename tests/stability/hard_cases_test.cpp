@@ -1,4 +1,4 @@
-// Hard cases of the HyLIoS walk (DESIGN.md §1 demand 2): each runs real specimens at the edges of
+// Hard cases of the HyLIoS walk (docs/architecture.md, "Rules that hold everywhere"): each runs real specimens at the edges of
 // the model and asserts finite outputs, exact energy balance (every ray ends in exactly one of
 // reflected / transmitted / absorbed, so R + T + A = 1 per ray) and termination (no ray reaches
 // the event bound; the mean number of events stays bounded).
