@@ -15,5 +15,6 @@ void registerRenderCommand(CLI::App& app);          // render_command.cpp
 void registerFigureCommand(CLI::App& app);          // figure_command.cpp
 void registerImageDiffCommand(CLI::App& app);       // image_diff_command.cpp
 void registerFitCommand(CLI::App& app);             // fit_command.cpp
+void registerValidateCommand(CLI::App& app);        // validate_command.cpp
 
 }  // namespace hylios

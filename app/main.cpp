@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   hylios::registerFigureCommand(app);
   hylios::registerImageDiffCommand(app);
   hylios::registerFitCommand(app);
+  hylios::registerValidateCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

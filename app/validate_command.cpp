@@ -1,0 +1,43 @@
+// hylios validate: every comparison the project has data for (paper Figs. 7, 8, 10, 11), written
+// as DIR/validation.md with PNG plots (app/validation_report.h). docs/validation.md is its output.
+#include <iostream>
+#include <memory>
+
+#include "app/commands.h"
+#include "app/validation_report.h"
+#include "skin/core/thread_limit.h"
+
+namespace hylios {
+namespace {
+
+struct ValidateArguments {
+  std::string out = "validation";
+  std::uint64_t rays = 100000;
+  std::uint64_t seed = 1;
+  int threads = 0;
+};
+
+}  // namespace
+
+void registerValidateCommand(CLI::App& app) {
+  auto args = std::make_shared<ValidateArguments>();
+  CLI::App* command = app.add_subcommand(
+      "validate", "Run every comparison with measured skin (Figs. 7, 8, 10, 11); writes DIR/validation.md and PNG plots");
+  command->add_option("--out", args->out, "Folder for validation.md and its plots")->capture_default_str();
+  command->add_option("--rays", args->rays, "Rays per wavelength (the visible BRDF uses a fifth per wavelength)")
+      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{1} << 36))
+      ->capture_default_str();
+  command->add_option("--seed", args->seed, "Random seed (same seed, same report at any thread count)");
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->callback([args] {
+    const ThreadLimit limit(args->threads);
+    ValidationOptions options;
+    options.outDir = args->out;
+    options.rays = args->rays;
+    options.seed = args->seed;
+    runValidation(options);
+    std::cout << "wrote " << (options.outDir / "validation.md").string() << "\n";
+  });
+}
+
+}  // namespace hylios
