@@ -362,6 +362,10 @@ Specimen loadSpecimen(const std::string& nameOrPath, const std::filesystem::path
   const bool isName = nameOrPath.find('/') == std::string::npos &&
                       path.extension() != ".toml";
   if (isName) path = specimenDir / (nameOrPath + ".toml");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw SpecimenError(fmt::format("specimen '{}': '{}' is a folder, not a specimen file", nameOrPath,
+                                    path.string()));
   std::ifstream in(path);
   if (!in) {
     if (isName)

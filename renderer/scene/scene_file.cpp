@@ -23,12 +23,16 @@ namespace {
 
 using Reader = TomlTableReader;
 
-constexpr std::int64_t kMaxResolution = 16384;
-constexpr std::int64_t kMaxPixels = std::int64_t{1} << 26;  // 64 Mpixel (8192 × 8192)
+constexpr std::int64_t kMaxResolution = kMaxFilmSide;
+constexpr std::int64_t kMaxPixels = kMaxFilmPixels;
 constexpr std::int64_t kMaxSamplesPerPixel = 1000000;
 constexpr std::size_t kMaxChannelsPerBand = 2251;  // 250–2500 nm at 1 nm
 const NumberRange kSpectralNm = NumberRange::closed(250, 2500);
 const NumberRange kPercent = NumberRange::closed(0, 100);
+// One scene unit is between 10 nm and 10 km: the skin walk's offsets (cm) divided by unit_cm stay
+// within the scene extent limit (kMaxSceneCoordinate).
+constexpr double kMinUnitCm = 1e-6;
+constexpr double kMaxUnitCm = 1e6;
 
 /// The elements of `[[key]]` in `reader`'s table (none if absent).
 std::vector<const toml::table*> arrayOfTables(Reader& reader, const std::string& key,
@@ -82,8 +86,8 @@ CameraDesc readCamera(const toml::table& t, const TomlSource& src) {
   c.lookAt = r.vec3("look_at");
   c.up = r.vec3("up", {0, 1, 0});
   c.verticalFovDeg = r.number("fov_deg", {0, 180, true, true}, 40);
-  c.apertureRadius = r.number("aperture_radius", NumberRange::nonNegative(), 0);
-  c.focusDistance = r.number("focus_distance", NumberRange::nonNegative(), 0);
+  c.apertureRadius = r.number("aperture_radius", sceneLengthRange(), 0);
+  c.focusDistance = r.number("focus_distance", sceneLengthRange(), 0);
   const glm::dvec3 view = c.lookAt - c.position;
   if (glm::length(view) == 0)
     throw SceneError(r.whereValue("look_at"), "'look_at' equals 'position'");
@@ -142,6 +146,25 @@ BandDesc readBand(const toml::table& t, int index, const TomlSource& src) {
   return b;
 }
 
+/// Two channels whose wavelengths round to the same 1e-6 nm would share a spectral EXR channel
+/// name (S0.<λ to 6 decimals>nm, renderer/image/film_output.h): refused, naming both bands.
+void checkDistinctChannels(const FilmDesc& film) {
+  std::map<long long, std::pair<std::size_t, double>> seen;  // λ in 1e-6 nm -> band, λ
+  for (std::size_t b = 0; b < film.bands.size(); ++b) {
+    for (double nm : film.bands[b].channelWavelengths()) {
+      const long long key = std::llround(nm * 1e6);
+      const auto [it, inserted] = seen.emplace(key, std::make_pair(b, nm));
+      if (inserted) continue;
+      const BandDesc& first = film.bands[it->second.first];
+      throw SceneError(film.bands[b].where,
+                       fmt::format("band '{}' has a channel at {} nm and band '{}' (at {}) one at {} nm: the "
+                                   "spectral channels would share one name (wavelengths are kept to 1e-6 nm); "
+                                   "give each channel its own wavelength",
+                                   film.bands[b].name, nm, first.name, first.where.str(), it->second.second));
+    }
+  }
+}
+
 FilmDesc readFilm(const toml::table& t, const TomlSource& src) {
   Reader r(t, "[film]", src, {"resolution", "spp", "exposure", "band"});
   FilmDesc f;
@@ -171,6 +194,7 @@ FilmDesc readFilm(const toml::table& t, const TomlSource& src) {
     names.add(f.bands.back().name, nameLocation(*band, src));
   }
   if (f.bands.empty()) r.failHere("[film] needs at least one [[film.band]]");
+  checkDistinctChannels(f);
   r.finish("[film]");
   return f;
 }
@@ -354,10 +378,10 @@ glm::dmat4 readTransform(const toml::table& t, const std::string& label, const T
   const glm::dvec3 rotateDeg = r.vec3("rotate_deg", glm::dvec3(0));
   glm::dvec3 scale(1);
   if (const toml::node* s = t.get("scale"); s && s->is_array()) {
-    const std::vector<double> v = r.numbers("scale", 3, NumberRange::positive());
+    const std::vector<double> v = r.numbers("scale", 3, sceneSizeRange());
     scale = {v[0], v[1], v[2]};
   } else if (s) {
-    scale = glm::dvec3(r.number("scale", NumberRange::positive()));
+    scale = glm::dvec3(r.number("scale", sceneSizeRange()));
   }
   r.finish("'transform'");
   glm::dmat4 m = glm::translate(glm::dmat4(1.0), translate);
@@ -392,7 +416,7 @@ ShapeDesc readShape(const toml::table& t, int index, const TomlSource& src,
   if (type == "sphere") {
     s.kind = ShapeDesc::Kind::Sphere;
     s.centre = r.vec3("centre", glm::dvec3(0));
-    s.radius = r.number("radius", NumberRange::positive());
+    s.radius = r.number("radius", sceneSizeRange());
   }
   if (type == "plane") {
     s.kind = ShapeDesc::Kind::Plane;
@@ -401,7 +425,7 @@ ShapeDesc readShape(const toml::table& t, int index, const TomlSource& src,
     if (glm::length(normal) == 0)
       throw SceneError(r.whereValue("normal"), "'normal' must not be zero");
     s.planeNormal = glm::normalize(normal);
-    s.planeSize = r.number("size", NumberRange::positive(), 10);
+    s.planeSize = r.number("size", sceneSizeRange(), 10);
   }
   r.finish(fmt::format("a \"{}\" shape", type));
   return s;
@@ -439,7 +463,7 @@ SceneDesc parseRoot(const toml::table& rootTable, const TomlSource& src) {
   Reader root(rootTable, "the top level", src,
               {"unit_cm", "camera", "film", "light", "material", "shape", "integrator"});
   SceneDesc scene;
-  scene.unitCm = root.number("unit_cm", NumberRange::positive(), 1.0);
+  scene.unitCm = root.number("unit_cm", NumberRange::closed(kMinUnitCm, kMaxUnitCm), 1.0);
   scene.camera = readCamera(requiredTable(root, "camera"), src);
   scene.film = readFilm(requiredTable(root, "film"), src);
   NameRegistry materials("material");

@@ -10,6 +10,11 @@
 
 namespace hylios {
 
+/// Film limits, the same for scene files and the command line's --resolution: at most
+/// kMaxFilmSide pixels per side and kMaxFilmPixels in all (docs/scene-format.md, "Limits").
+constexpr int kMaxFilmSide = 16384;
+constexpr long long kMaxFilmPixels = 1ll << 26;  // 64 Mpixel (8192 × 8192)
+
 SceneDesc loadSceneFile(const std::filesystem::path& path);
 /// `sourceName` appears in error locations; relative paths resolve against `baseDir`.
 SceneDesc parseSceneText(const std::string& tomlText, const std::string& sourceName,

@@ -152,7 +152,7 @@ std::vector<double> TomlTableReader::numbers(const std::string& key, std::size_t
 }
 
 glm::dvec3 TomlTableReader::vec3(const std::string& key) {
-  const std::vector<double> v = numbers(key, 3, NumberRange::any());
+  const std::vector<double> v = numbers(key, 3, sceneCoordinateRange());
   return {v[0], v[1], v[2]};
 }
 
@@ -167,9 +167,14 @@ std::filesystem::path TomlTableReader::existingFile(const std::string& key) {
   if (path.is_relative()) path = source_.baseDir / path;
   path = path.lexically_normal();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status))
     fail(*table_.get(key),
          fmt::format("'{}': file '{}' does not exist (looked for '{}')", key, text, path.string()));
+  if (std::filesystem::is_directory(status))
+    fail(*table_.get(key), fmt::format("'{}': '{}' is a folder, not a file ('{}')", key, text, path.string()));
+  if (!std::filesystem::is_regular_file(status))
+    fail(*table_.get(key), fmt::format("'{}': '{}' is not a regular file ('{}')", key, text, path.string()));
   return path;
 }
 

@@ -36,6 +36,18 @@ struct NumberRange {
   std::string describe() const;  ///< e.g. "must be in (0, 180)"
 };
 
+/// The scene extent limit (docs/scene-format.md, "Limits"): every coordinate, direction
+/// component, size and distance a scene file gives is at most this many scene units in
+/// magnitude, so that every ray the renderer makes stays well inside Embree's single-precision
+/// range (|x| < 1.8e18) and its relative precision.
+constexpr double kMaxSceneCoordinate = 1e7;
+/// [-kMaxSceneCoordinate, kMaxSceneCoordinate].
+inline NumberRange sceneCoordinateRange() { return NumberRange::closed(-kMaxSceneCoordinate, kMaxSceneCoordinate); }
+/// (0, kMaxSceneCoordinate].
+inline NumberRange sceneSizeRange() { return {0, kMaxSceneCoordinate, true, false}; }
+/// [0, kMaxSceneCoordinate].
+inline NumberRange sceneLengthRange() { return NumberRange::closed(0, kMaxSceneCoordinate); }
+
 /// The file a table came from: its name in messages and the folder relative paths resolve in.
 struct TomlSource {
   std::string name;
@@ -75,7 +87,8 @@ class TomlTableReader {
   /// One of `choices`; the message lists them.
   std::string choice(const std::string& key, const std::vector<std::string>& choices);
   bool boolean(const std::string& key, bool fallback);
-  glm::dvec3 vec3(const std::string& key);  ///< required; three finite numbers
+  /// Required; three finite numbers in sceneCoordinateRange() (positions and directions alike).
+  glm::dvec3 vec3(const std::string& key);
   glm::dvec3 vec3(const std::string& key, const glm::dvec3& fallback);
   /// An array of finite numbers in `range`; `size` 0 = any length (at least one element).
   std::vector<double> numbers(const std::string& key, std::size_t size, const NumberRange& range);

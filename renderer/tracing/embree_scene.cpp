@@ -5,6 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "renderer/scene/toml_table_reader.h"
 
 namespace hylios {
 namespace {
@@ -91,7 +96,26 @@ void sphereOccluded(const RTCOccludedFunctionNArguments* args) {
   }
 }
 
+/// The largest coordinate of a derived point (a transformed vertex, a sphere's extremes): ten
+/// times the scene file's limit (renderer/scene/toml_table_reader.h), since a transform scales.
+constexpr double kMaxDerivedCoordinate = 10 * kMaxSceneCoordinate;
+/// Embree 3 asserts (and aborts) on a ray whose origin or direction is not inside ±1.844e18.
+constexpr double kMaxRayCoordinate = 1e17;
+
+bool rayInRange(const Ray& ray) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::fabs(ray.origin[k]) <= kMaxRayCoordinate) || !(std::fabs(ray.direction[k]) <= kMaxRayCoordinate))
+      return false;
+  return !std::isnan(ray.tMax);
+}
+
 void setRay(RTCRay& r, const Ray& ray) {
+  if (!rayInRange(ray))
+    throw std::runtime_error(fmt::format("a ray left the range the tracer can represent (origin ({}, {}, {}), "
+                                         "direction ({}, {}, {})); keep the scene within the limits of "
+                                         "docs/scene-format.md",
+                                         ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
+                                         ray.direction.z));
   r.org_x = static_cast<float>(ray.origin.x);
   r.org_y = static_cast<float>(ray.origin.y);
   r.org_z = static_cast<float>(ray.origin.z);
@@ -161,6 +185,9 @@ void EmbreeScene::addShapes(const SceneDesc& scene) {
       rtcSetGeometryIntersectFunction(geometry, sphereIntersect);
       rtcSetGeometryOccludedFunction(geometry, sphereOccluded);
       const glm::dvec3 c = glm::abs(shape->sphere.centre) + shape->sphere.radius;
+      if (!(std::max({c.x, c.y, c.z}) <= kMaxDerivedCoordinate))
+        throw SceneError(desc.where, fmt::format("the transformed sphere reaches {:g} scene units from the origin; "
+                                                 "at most {:g}", std::max({c.x, c.y, c.z}), kMaxDerivedCoordinate));
       extent_ = std::max({extent_, c.x, c.y, c.z});
     } else {
       if (desc.kind == ShapeDesc::Kind::Mesh) {
@@ -175,6 +202,9 @@ void EmbreeScene::addShapes(const SceneDesc& scene) {
       for (const glm::dvec3& p : mesh.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
           throw SceneError(desc.where, "a transformed vertex is not finite");
+        else if (!(std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) <= kMaxDerivedCoordinate))
+          throw SceneError(desc.where, fmt::format("a transformed vertex ({:g}, {:g}, {:g}) lies beyond {:g} scene "
+                                                   "units from the origin", p.x, p.y, p.z, kMaxDerivedCoordinate));
       geometry = rtcNewGeometry(device_.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
       auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
           geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));

@@ -1,12 +1,48 @@
 #include "renderer/tracing/exit_table_cache.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <system_error>
 
 #include "skin/core/content_hash.h"
 
 namespace hylios {
+
+namespace {
+
+std::atomic<int> buildsNow{0};
+static_assert(std::atomic<int>::is_always_lock_free, "read by signal handlers");
+
+/// An exclusive flock on `path` (created if missing) for the life of the object; no lock (and no
+/// error) when the file cannot be opened, so that a read-only cache still works.
+class FileLock {
+ public:
+  explicit FileLock(const std::filesystem::path& path) : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+    if (fd_ < 0) return;
+    while (::flock(fd_, LOCK_EX) != 0 && errno == EINTR) {
+    }
+  }
+  ~FileLock() {
+    if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+  }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+}  // namespace
+
+int ExitTableCache::buildsInProgress() { return buildsNow.load(std::memory_order_relaxed); }
+ExitTableCache::BuildInProgress::BuildInProgress() { buildsNow.fetch_add(1); }
+ExitTableCache::BuildInProgress::~BuildInProgress() { buildsNow.fetch_sub(1); }
 
 ExitTableCache::ExitTableCache(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
@@ -54,7 +90,20 @@ std::shared_ptr<const skin::ExitTable> ExitTableCache::get(const skin::SkinWalk&
   }
   std::shared_ptr<const skin::ExitTable> table;
   const bool onDisk = folderUsable();
+  // One builder per table across processes: the first request of a key in this process takes
+  // the file lock (waiting for another process that builds it). A second request of the same key
+  // in this process does not wait (it may run nested on the first one's own thread, inside the
+  // build's parallel loop, and would deadlock) but builds the table itself, as before.
+  std::optional<FileLock> claim;
+  bool claimedHere = false;
   if (onDisk) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      claimedHere = claimed_.insert(key).second;
+    }
+    std::filesystem::path lockFile = fileFor(key);
+    lockFile += ".lock";
+    if (claimedHere) claim.emplace(lockFile);
     const std::filesystem::path file = fileFor(key);
     std::error_code error;
     if (std::filesystem::exists(file, error)) {
@@ -67,6 +116,7 @@ std::shared_ptr<const skin::ExitTable> ExitTableCache::get(const skin::SkinWalk&
     }
   }
   if (!table) {
+    const BuildInProgress building;
     table = std::make_shared<const skin::ExitTable>(skin::ExitTable::build(walk, settings));
     ++built_;
     if (onDisk) {
@@ -78,6 +128,7 @@ std::shared_ptr<const skin::ExitTable> ExitTableCache::get(const skin::SkinWalk&
     }
   }
   std::lock_guard<std::mutex> lock(mutex_);
+  if (claimedHere) claimed_.erase(key);
   return tables_.emplace(key, table).first->second;
 }
 

@@ -7,7 +7,9 @@
 // writes it atomically, so a truncated, corrupt, stale or foreign file is rebuilt. When the folder
 // cannot be created or written, tables are built in memory and one warning is printed.
 // Thread-safe: tables for different keys are built in parallel; tables already obtained are
-// kept in memory for the life of the cache object.
+// kept in memory for the life of the cache object. Across processes (and cache objects) a table
+// is built once: its builder holds an exclusive lock (flock) on "<table file>.lock" while it looks
+// for, builds and writes the table, so a second render sharing the cache waits and then reads it.
 #pragma once
 #include <atomic>
 #include <cstddef>
@@ -15,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 
 #include "skin/exit_table.h"
@@ -42,12 +45,25 @@ class ExitTableCache {
   std::size_t built() const { return built_; }     ///< tables built by walks
   std::size_t rejected() const { return rejected_; }  ///< files found but invalid (then rebuilt)
 
+  /// Exit tables being built in this process now (async-signal-safe to read: a lock-free atomic),
+  /// so that an interrupt handler can say that it finishes the table first.
+  static int buildsInProgress();
+  /// Counts one build in progress while alive.
+  class BuildInProgress {
+   public:
+    BuildInProgress();
+    ~BuildInProgress();
+    BuildInProgress(const BuildInProgress&) = delete;
+    BuildInProgress& operator=(const BuildInProgress&) = delete;
+  };
+
  private:
   bool folderUsable();
 
   std::filesystem::path folder_;
   std::mutex mutex_;
   std::map<std::uint64_t, std::shared_ptr<const skin::ExitTable>> tables_;
+  std::set<std::uint64_t> claimed_;  ///< keys whose file lock a thread of this object holds or awaits
   std::atomic<std::size_t> loaded_{0}, built_{0}, rejected_{0};
   std::once_flag folderChecked_, warned_;
   bool usable_ = false;

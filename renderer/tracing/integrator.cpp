@@ -4,8 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <sstream>
@@ -284,11 +286,18 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
     progress = options.progress(options.label, tiles * static_cast<std::uint64_t>(spp - done));
   RenderStats total;
   int passSamples = options.samplesPerPass > 0 ? options.samplesPerPass : 1;
+  const int doneAtStart = done;
   while (done < spp) {
     if (options.stopRequested && options.stopRequested()) break;
     const int end = spp - done > passSamples ? done + passSamples : spp;
     const auto start = std::chrono::steady_clock::now();
-    renderPass(film, done, end, total, progress.get());
+    // The first pass of a call may be long (a big film, a slow walk) and nothing of it could be
+    // saved anyway: a stop request abandons it between tiles (issue 13, row 8). Later passes are
+    // short (adaptive) and finish, so that the samples so far can be saved.
+    const bool firstPass = done == doneAtStart;
+    if (!renderPass(film, done, end, total, progress.get(),
+                    firstPass ? options.stopRequested : std::function<bool()>{}))
+      break;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     done = end;
     film.setSamplesPerPixelDone(done);
@@ -308,8 +317,9 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   return total;
 }
 
-void Integrator::renderPass(Film& film, int firstSample, int endSample, RenderStats& total,
-                            RenderProgress* progress) const {
+bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderStats& total,
+                            RenderProgress* progress, const std::function<bool()>& abandon) const {
+  std::atomic<bool> abandoned{false};
   const int width = film.width(), height = film.height();
   const int spp = film.desc().samplesPerPixel;
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
@@ -320,6 +330,10 @@ void Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles, 1), [&](const tbb::blocked_range<std::size_t>& range) {
     RenderStats stats;
     for (std::size_t tile = range.begin(); tile != range.end(); ++tile) {
+      if (abandoned.load(std::memory_order_relaxed) || (abandon && abandon())) {
+        abandoned.store(true, std::memory_order_relaxed);
+        break;
+      }
       const int x0 = static_cast<int>(tile % static_cast<std::size_t>(tilesX)) * kTileSize;
       const int y0 = static_cast<int>(tile / static_cast<std::size_t>(tilesX)) * kTileSize;
       for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
@@ -346,6 +360,7 @@ void Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
     std::lock_guard<std::mutex> lock(totalMutex);
     total.add(stats);
   });
+  return !abandoned.load();
 }
 
 }  // namespace hylios

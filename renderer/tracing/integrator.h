@@ -111,7 +111,10 @@ class Integrator {
   double directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal, std::size_t channel,
                      skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const;
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
-  void renderPass(Film& film, int firstSample, int endSample, RenderStats& total, RenderProgress* progress) const;
+  /// Returns false when `abandon` (checked before each tile) asked to stop: the film then holds
+  /// part of the pass and must not be written.
+  bool renderPass(Film& film, int firstSample, int endSample, RenderStats& total, RenderProgress* progress,
+                  const std::function<bool()>& abandon = {}) const;
   Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction, double tMax) const;
   /// A smooth dielectric of index `refractiveIndex` at `hit`: Fresnel-chosen mirror reflection or
   /// refraction (beta takes the radiance scaling (n_from/n_to)²); the continued ray.

@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <atomic>
 #include <fstream>
+#include <functional>
+#include <thread>
 #include <iterator>
 
 #include "renderer/scene/data_paths.h"
@@ -134,4 +137,25 @@ TEST(ExitTableCache, UnusableFolderBuildsInMemory) {
   EXPECT_NE(table, nullptr);
   EXPECT_EQ(cache.built(), 1u);
   EXPECT_NE(warning.find("cannot be created"), std::string::npos) << warning;
+}
+
+// Issue 13: two renders sharing a cache (two cache objects on one folder, as two processes)
+// asking for the same table at once build it once; the other waits for it and reads it.
+TEST(ExitTableCache, ConcurrentRequestsForOneTableBuildItOnce) {
+  const auto folder = freshFolder("concurrent");
+  const skin::SkinWalk walk(s1Optics(520));
+  skin::ExitTableSettings settings = small();
+  settings.raysPerBin = 4000;  // long enough for the two requests to overlap
+  ExitTableCache first(folder), second(folder);
+  std::atomic<int> ready{0};
+  auto request = [&](ExitTableCache& cache) {
+    ++ready;
+    while (ready.load() < 2) std::this_thread::yield();
+    cache.get(walk, settings);
+  };
+  std::thread a(request, std::ref(first)), b(request, std::ref(second));
+  a.join();
+  b.join();
+  EXPECT_EQ(first.built() + second.built(), 1u);
+  EXPECT_EQ(first.loaded() + second.loaded(), 1u);
 }

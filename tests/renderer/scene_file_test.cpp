@@ -322,8 +322,8 @@ TEST(SceneFile, WavelengthOutsideTheModel) {
 }
 
 TEST(SceneFile, NegativeRadiusAndScale) {
-  expectError("radius = 0.5", "radius = -1", "-1", "'radius' = -1 must be > 0");
-  expectError("scale = 2 }", "scale = 0 }", "0 }", "'scale' = 0 must be > 0");
+  expectError("radius = 0.5", "radius = -1", "-1", "'radius' = -1 must be in (0, 10000000]");
+  expectError("scale = 2 }", "scale = 0 }", "0 }", "'scale' = 0 must be in (0, 10000000]");
 }
 
 TEST(SceneFile, SamplesAndResolution) {
