@@ -41,12 +41,6 @@ constexpr std::string_view absorberName(Absorber a) {
   return names[static_cast<std::size_t>(a)];
 }
 constexpr std::size_t index(Absorber a) { return static_cast<std::size_t>(a); }
-inline std::optional<Absorber> absorberFromName(std::string_view name) {
-  for (Absorber a : kAllAbsorbers)
-    if (absorberName(a) == name) return a;
-  return std::nullopt;
-}
-
 /// The concentration unit in which an absorber's specific absorption coefficient is expressed.
 /// μa of a mixture [cm⁻¹] = Σ specificAbsorption(a, λ) · concentration(a) in that unit.
 enum class ConcentrationUnit {

@@ -140,8 +140,10 @@ ExitTable::ExitTable(const SkinWalk& walk, const ExitTableSettings& settings)
   validateSettings(settings);
 }
 
-ExitTable::Bin& ExitTable::newBin() {
-  Bin& b = bins_.emplace_back();
+ExitTable::Bin& ExitTable::newBin() { return bins_.emplace_back(emptyBin()); }
+
+ExitTable::Bin ExitTable::emptyBin() const {
+  Bin b;
   b.offsetCounts.assign(static_cast<std::size_t>(settings_.radialBins + 2) * settings_.offsetAzimuthBins, 0);
   b.exitPolarCounts.assign(static_cast<std::size_t>(settings_.polarBins), 0);
   b.transmittedPolarCounts.assign(static_cast<std::size_t>(settings_.polarBins), 0);
@@ -172,8 +174,7 @@ int ExitTable::radialCell(double radiusCm) const {
   return 1 + std::clamp(static_cast<int>(x), 0, settings_.radialBins - 1);  // rounding at the edges only
 }
 
-double ExitTable::radialCellLowerCm(int bin, int cell) const {
-  (void)bin;
+double ExitTable::radialCellLowerCm(int cell) const {
   if (cell == 0) return 0;
   if (cell > settings_.radialBins) return kMaxRadiusCm;
   return kMinRadiusCm * std::pow(kMaxRadiusCm / kMinRadiusCm, static_cast<double>(cell - 1) / settings_.radialBins);
@@ -228,15 +229,14 @@ ExitTable ExitTable::build(const SkinWalk& walk, const ExitTableSettings& settin
   const SkinWalk buildWalk(walk.optics(), buildOptions);
   const std::size_t bins = static_cast<std::size_t>(settings.cosineBins);
   const std::uint64_t chunks = (settings.raysPerBin + kChunkRays - 1) / kChunkRays;
-  ExitTable scratch(walk, settings);  // owns the per-chunk partial bins
-  for (std::size_t i = 0; i < bins * chunks; ++i) scratch.newBin();
+  std::vector<Bin> partials(bins * chunks, table.emptyBin());  // per-chunk partial bins
   tbb::parallel_for(std::size_t{0}, bins * chunks, [&](std::size_t task) {
     const std::size_t k = task / chunks;
     const std::uint64_t first = (task % chunks) * kChunkRays;
     const std::uint64_t last = std::min(first + kChunkRays, settings.raysPerBin);
     const double mu = table.binCosine(static_cast<int>(k));
     const Vec3 direction{std::sqrt(1 - mu * mu), 0, mu};
-    Bin& partial = scratch.bins_[task];
+    Bin& partial = partials[task];
     for (std::uint64_t i = first; i < last; ++i) {
       Rng rng(settings.seed, k, i);
       table.tally(partial, buildWalk.traceEntered(direction, rng));
@@ -244,7 +244,7 @@ ExitTable ExitTable::build(const SkinWalk& walk, const ExitTableSettings& settin
   });
   for (std::size_t k = 0; k < bins; ++k) {
     Bin& b = table.newBin();
-    for (std::uint64_t c = 0; c < chunks; ++c) b.merge(scratch.bins_[k * chunks + c]);
+    for (std::uint64_t c = 0; c < chunks; ++c) b.merge(partials[k * chunks + c]);
   }
   table.prepareSampling();
   return table;
@@ -323,7 +323,7 @@ SkinPath ExitTable::sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng)
   const double v = rng.uniform();
   double r;
   const int binIndex = static_cast<int>(&bin - bins_.data());
-  const double lo = radialCellLowerCm(binIndex, radial), hi = radialCellUpperCm(binIndex, radial);
+  const double lo = radialCellLowerCm(radial), hi = radialCellUpperCm(binIndex, radial);
   if (radial == 0) r = hi * std::sqrt(v);                              // uniform in area
   else if (radial > settings_.radialBins) r = lo + v * (hi - lo);      // overflow: uniform
   else r = lo * std::pow(hi / lo, v);                                  // log-uniform

@@ -110,8 +110,9 @@ class ExitTable {
   std::vector<double> radialDistribution(int bin) const;
   std::vector<double> offsetAzimuthDistribution(int bin) const;
   std::vector<double> exitPolarDistribution(int bin) const;
-  /// Edges of radial cell c: [radialCellLowerCm(c), radialCellUpperCm(c)).
-  double radialCellLowerCm(int bin, int cell) const;
+  /// Edges of radial cell c of bin `bin`: [radialCellLowerCm(c), radialCellUpperCm(bin, c)) (only
+  /// the overflow cell's upper edge depends on the bin).
+  double radialCellLowerCm(int cell) const;
   double radialCellUpperCm(int bin, int cell) const;
 
  private:
@@ -130,6 +131,7 @@ class ExitTable {
 
   ExitTable(const SkinWalk& walk, const ExitTableSettings& settings);
   Bin& newBin();
+  Bin emptyBin() const;  ///< zero counts, sized by the settings
   void prepareSampling();
   std::string serializePayload() const;
   bool parsePayload(const std::string& payload, std::string* whyNot);

@@ -29,11 +29,6 @@ constexpr std::string_view layerName(Layer layer) {
   return names[static_cast<std::size_t>(layer)];
 }
 constexpr std::size_t index(Layer layer) { return static_cast<std::size_t>(layer); }
-inline std::optional<Layer> layerFromName(std::string_view name) {
-  for (Layer l : kAllLayers)
-    if (layerName(l) == name) return l;
-  return std::nullopt;
-}
 /// The three epidermal layers that hold melanin (granulosum, spinosum, basale).
 constexpr bool isPigmentedEpidermis(Layer l) {
   return l == Layer::StratumGranulosum || l == Layer::StratumSpinosum || l == Layer::StratumBasale;

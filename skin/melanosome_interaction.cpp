@@ -117,11 +117,6 @@ MelanosomeEvent MelanosomeLayer::interact(const Vec3& direction, Rng& rng) const
   return event;
 }
 
-MelanosomeEvent interactWithMelanosomes(const Vec3& direction, const SkinOptics& optics, Layer layer,
-                                        Rng& rng) {
-  return MelanosomeLayer(optics, layer).interact(direction, rng);
-}
-
 bool absorbedInMelanosome(const Vec3& direction, double semiMinorCm, double semiMajorCm,
                           double interiorMuA_perCm, double nLayer, double nMelanin, Rng& rng) {
   if (!(std::fabs(dot(direction, direction) - 1.0) <= 1e-6))

@@ -77,9 +77,6 @@ class MelanosomeLayer {
   double absorbedByWholePlusOne_ = 0;  // tabulated: 1 − q^(floor(m) + 1)
 };
 
-MelanosomeEvent interactWithMelanosomes(const Vec3& direction, const SkinOptics& optics, Layer layer,
-                                        Rng& rng);
-
 /// One melanosome (semi-axes a ≤ c in cm): returns true if the ray is absorbed inside it. The
 /// direction (unit) does not change the law (see above).
 bool absorbedInMelanosome(const Vec3& direction, double semiMinorCm, double semiMajorCm,

@@ -403,10 +403,6 @@ double SpectralDatabase::waterRefractiveIndex(double wavelengthNm) const {
   return (*impl_->waterIndex)(wavelengthNm);
 }
 
-SpectralCoverage SpectralDatabase::waterRefractiveIndexCoverage() const {
-  return impl_->waterIndex->coverage();
-}
-
 SpectralDatabase::SpectralDatabase(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 SpectralDatabase::SpectralDatabase(SpectralDatabase&&) noexcept = default;
 SpectralDatabase& SpectralDatabase::operator=(SpectralDatabase&&) noexcept = default;

@@ -41,7 +41,6 @@ class SpectralDatabase {
 
   /// Real refractive index of water (for the layers' dispersion, paper Fig. 6).
   double waterRefractiveIndex(double wavelengthNm) const;
-  SpectralCoverage waterRefractiveIndexCoverage() const;
 
   SpectralDatabase(SpectralDatabase&&) noexcept;
   SpectralDatabase& operator=(SpectralDatabase&&) noexcept;

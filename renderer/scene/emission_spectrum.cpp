@@ -88,20 +88,4 @@ double evaluateEmission(const EmissionDesc& e, double wavelengthNm) {
   return e.scale * shape;
 }
 
-const char* emissionKindName(EmissionDesc::Kind kind) {
-  switch (kind) {
-    case EmissionDesc::Kind::Constant:
-      return "constant";
-    case EmissionDesc::Kind::D65:
-      return "d65";
-    case EmissionDesc::Kind::Blackbody:
-      return "blackbody";
-    case EmissionDesc::Kind::Led:
-      return "led";
-    case EmissionDesc::Kind::Tabulated:
-      return "tabulated";
-  }
-  return "?";
-}
-
 }  // namespace hylios

@@ -25,7 +25,5 @@ double ledGaussian(double centreNm, double fwhmNm, double wavelengthNm);
 
 /// The spectrum `emission` at `wavelengthNm` (scale included).
 double evaluateEmission(const EmissionDesc& emission, double wavelengthNm);
-/// The name used in scene files: "constant", "d65", "blackbody", "led", "tabulated".
-const char* emissionKindName(EmissionDesc::Kind kind);
 
 }  // namespace hylios

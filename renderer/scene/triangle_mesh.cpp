@@ -205,12 +205,4 @@ void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld, const So
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
 }
 
-double meshArea(const TriangleMesh& mesh) {
-  double area = 0;
-  for (const auto& t : mesh.triangles)
-    area += 0.5 * glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                         mesh.positions[t[2]] - mesh.positions[t[0]]));
-  return area;
-}
-
 }  // namespace hylios

@@ -44,7 +44,4 @@ TriangleMesh makePlaneMesh(const glm::dvec3& point, const glm::dvec3& normal, do
 /// at `where` for a singular transform.
 void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld, const SourceLocation& where);
 
-/// Total area of the mesh's triangles (scene units²).
-double meshArea(const TriangleMesh& mesh);
-
 }  // namespace hylios

@@ -39,12 +39,6 @@ struct Frame {
   Vec3 toLocal(const Vec3& world) const { return {dot(world, t), dot(world, b), dot(world, n)}; }
 };
 
-/// The direction at polar angle theta and azimuth phi about the axis `axis` (unit).
-inline Vec3 perturbDirection(const Vec3& axis, double cosTheta, double phi) {
-  const double sinTheta = std::sqrt(std::fmax(0.0, 1.0 - cosTheta * cosTheta));
-  return Frame(axis).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
-}
-
 /// The same from the cosines and sines of θ and φ (no trigonometric calls).
 inline Vec3 directionAbout(const Vec3& axis, double cosTheta, double sinTheta, double cosPhi,
                            double sinPhi) {

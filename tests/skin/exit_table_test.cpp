@@ -162,10 +162,10 @@ TEST_F(ExitTableSampling, ReproducesTheStoredDistributions) {
     const double r = std::hypot(p.exitOffsetXCm, p.exitOffsetYCm);
     int cell = 0;
     while (cell + 1 < static_cast<int>(radial.size()) && r >= table.radialCellUpperCm(bin, cell)) ++cell;
-    ASSERT_GE(r, table.radialCellLowerCm(bin, cell));
+    ASSERT_GE(r, table.radialCellLowerCm(cell));
     radialSeen[static_cast<std::size_t>(cell)]++;
     if (cell >= 1 && cell + 1 < static_cast<int>(radial.size())) {
-      const double lo = table.radialCellLowerCm(bin, cell), hi = table.radialCellUpperCm(bin, cell);
+      const double lo = table.radialCellLowerCm(cell), hi = table.radialCellUpperCm(bin, cell);
       within[std::min<std::size_t>(9, static_cast<std::size_t>(std::log(r / lo) / std::log(hi / lo) * 10))]++;
     }
     double rel = std::atan2(p.exitOffsetYCm, p.exitOffsetXCm) - phiT;
