@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -92,7 +93,18 @@ void plotFit(const FitArguments& args, const skin::FitResult& fit, const std::ve
   plotPanels(args.plot, title, {panel}, 1, 1100, 650);
 }
 
+/// Fails before the fit (minutes) when an output could not be written afterwards.
+void checkOutputFolder(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty() && !std::filesystem::is_directory(parent))
+    throw std::runtime_error(option + " '" + path + "': folder '" + parent.string() + "' does not exist");
+  if (std::filesystem::is_directory(path)) throw std::runtime_error(option + " '" + path + "' is a folder");
+}
+
 void runFit(const FitArguments& args) {
+  checkOutputFolder("--out", args.out);
+  checkOutputFolder("--plot", args.plot);
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen start = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());

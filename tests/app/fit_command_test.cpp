@@ -59,6 +59,9 @@ TEST(FitCommand, BadInputsAreClearErrorsAndWriteNothing) {
   const std::string nanError = runFit("--measured " + nan.string() + ":skin --free blood" + common);
   EXPECT_NE(nanError.find("nan.csv:3"), std::string::npos) << nanError;
   EXPECT_NE(nanError.find("not a finite number"), std::string::npos) << nanError;
+  EXPECT_NE(runFit("--measured " + kNcsu + ":obj113 --free blood --specimen S2 --out " + (scratch.path / "no" / "f.toml").string())
+                .find("does not exist"),
+            std::string::npos);
   EXPECT_FALSE(fs::exists(out));
 }
 
