@@ -13,6 +13,7 @@
 
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/estimator_option.h"
 #include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
 #include "app/progress_bar.h"
@@ -40,6 +41,7 @@ struct BrdfArguments {
   std::string out;
   std::string plot;
   int threads = 0;
+  std::string estimator = "spectral";
 };
 
 std::string formatCsv(const skin::DirectionBins& bins, const skin::ReflectionDistribution& d) {
@@ -131,12 +133,11 @@ void runBrdf(const BrdfArguments& args) {
   run.seed = args.seed;
   run.tally.polarBins = args.polarBins;
   run.tally.azimuthBins = args.azimuthBins;
-  std::vector<skin::ReflectionDistribution> perWavelength(wavelengths.size());
+  std::vector<skin::ReflectionDistribution> perWavelength;
   ProgressBar progress("brdf " + specimen.name, wavelengths.size());
-  tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {
-    perWavelength[i] = skin::reflectionDistribution(skin::simulateSkin(optics[i], run));
-    progress.advance();
-  });
+  for (const skin::SkinTally& tally : simulateWithEstimator(args.estimator, optics, run))
+    perWavelength.push_back(skin::reflectionDistribution(tally));
+  progress.advance(wavelengths.size());
   progress.finish();
   const skin::ReflectionDistribution d = skin::meanOverWavelengths(perWavelength);
   writeTextAtomically(args.out, formatCsv(bins, d));
@@ -161,6 +162,7 @@ void registerBrdfCommand(CLI::App& app) {
                                           "start:stop:step or a comma list, nm; several are averaged with equal weight");
   command->add_flag("--visible", args->visible, "Average over 380–780 nm every 10 nm, equal weight per wavelength")
       ->excludes(wavelengths);
+  addEstimatorOption(*command, args->estimator);
   command->add_option("--rays", args->rays, "Rays per wavelength")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
       ->capture_default_str();

@@ -33,7 +33,7 @@ void runFigure(const FigureArguments& args) {
   for (const SceneDesc& scene : scenes) {
     const RenderResult result = renderScene(scene, settings, &std::cout);
     const std::string stem = scene.file.stem().string();
-    const auto written = writeFilmOutputs(*result.film, fs::path(args.out) / (stem + ".exr"));
+    const auto written = writeFilmOutputs(*result.film, fs::path(args.out) / (stem + ".exr"), renderAttributes(scene, result));
     int previews = 0;
     for (const auto& path : written) {
       std::cout << "wrote " << path.string() << "\n";

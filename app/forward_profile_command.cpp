@@ -15,6 +15,7 @@
 
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/estimator_option.h"
 #include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
 #include "app/specimen_options.h"
@@ -37,6 +38,7 @@ struct ForwardProfileArguments {
   std::string out;
   std::string plot;
   int threads = 0;
+  std::string estimator = "spectral";
 };
 
 /// The index below the stratum basale: "matched" or a finite number ≥ 1.
@@ -100,7 +102,7 @@ void runForwardProfile(const ForwardProfileArguments& args) {
   run.walk.belowRefractiveIndex = belowRefractiveIndex(args.belowIndex, optics);
   run.tally.polarBins = args.polarBins;
   run.tally.azimuthBins = 1;  // azimuthally averaged
-  const skin::SkinTally tally = skin::simulateSkin(optics, run);
+  const skin::SkinTally tally = simulateWithEstimator(args.estimator, {optics}, run).front();
   const skin::TransmissionProfile profile = skin::transmissionProfile(tally);
   writeTextAtomically(args.out, formatCsv(profile));
   std::printf("%s epidermis at %g nm, below n = %.4f: T = %.5f ± %.5f, R = %.5f, absorbed %.5f\n",
@@ -118,6 +120,7 @@ void registerForwardProfileCommand(CLI::App& app) {
       "forward-profile", "Angular profile of light transmitted through the epidermis at normal incidence (paper Fig. 8)");
   addSpecimenOptions(*command, args->specimen);
   command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")->capture_default_str();
+  addEstimatorOption(*command, args->estimator);
   command->add_option("--rays", args->rays, "Rays")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
       ->capture_default_str();

@@ -16,9 +16,21 @@ struct ImageDiffArguments {
   std::string reference;
   int blockSize = 1;
   std::string csv;
+  bool noise = false;
 };
 
+/// --noise: the two images are two renders of one scene with different seeds.
+void printNoise(const ImageDiffArguments& args) {
+  const ExrImage a = readExrImage(args.test), b = readExrImage(args.reference);
+  const std::vector<bool>& mask = !a.coverage.empty() ? a.coverage : b.coverage;
+  std::cout << "noise of '" << args.test << "' and '" << args.reference
+            << "' (two seeds: median over the pixels that see an object of |a - b|/sqrt(2)/mean"
+            << (mask.empty() ? "; no coverage channel A: every pixel" : "") << ")\n"
+            << formatNoise(measureNoise(noiseImageOf(a), noiseImageOf(b), mask));
+}
+
 void runImageDiff(const ImageDiffArguments& args) {
+  if (args.noise) return printNoise(args);
   const ImageComparison comparison = compareImageFiles(args.test, args.reference, args.blockSize);
   std::cout << "test '" << args.test << "' against reference '" << args.reference << "'\n"
             << formatComparisonTable(comparison);
@@ -39,6 +51,9 @@ void registerImageDiffCommand(CLI::App& app) {
   command->add_option("--block", args->blockSize, "Compare means over NxN pixel blocks (default 1: pixels)")
       ->check(CLI::Range(1, 1 << 16));
   command->add_option("--csv", args->csv, "CSV file to write (one row per channel, then 'overall')");
+  command->add_flag("--noise", args->noise,
+                    "Instead: the per-pixel noise of two renders that differ only in the seed, per band, R, G, B "
+                    "and chromaticity (median over the pixels that see an object, channel A)");
   command->callback([args] { runImageDiff(*args); });
 }
 

@@ -8,6 +8,7 @@
 
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/estimator_option.h"
 #include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
 #include "app/specimen_options.h"
@@ -29,6 +30,7 @@ struct RadialProfileArguments {
   std::string out;
   std::string plot;
   int threads = 0;
+  std::string estimator = "spectral";
 };
 
 std::string formatCsv(const skin::RadialProfile& p) {
@@ -75,7 +77,7 @@ void runRadialProfile(const RadialProfileArguments& args) {
   run.seed = args.seed;
   run.tally.radialBins = args.bins;
   run.tally.maxRadiusCm = args.maxRadiusCm;
-  const skin::RadialProfile profile = skin::radialProfile(skin::simulateSkin(optics, run));
+  const skin::RadialProfile profile = skin::radialProfile(simulateWithEstimator(args.estimator, {optics}, run).front());
   writeTextAtomically(args.out, formatCsv(profile));
   std::printf("%s at %g nm, incidence %g°: R_d = %.5f ± %.5f, of which %.5f ± %.5f beyond %g cm\n",
               specimen.name.c_str(), args.wavelengthNm, args.angleDeg, profile.subsurfaceReflectance.mean,
@@ -95,6 +97,7 @@ void registerRadialProfileCommand(CLI::App& app) {
   command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
       ->check(CLI::Range(0.0, 89.999))
       ->capture_default_str();
+  addEstimatorOption(*command, args->estimator);
   command->add_option("--rays", args->rays, "Rays")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
       ->capture_default_str();

@@ -63,7 +63,7 @@ void runRender(const RenderArguments& args, const CLI::App& command) {
   const InterruptSignalScope signals;
   settings.stopRequested = [&signals] { return signals.requested(); };
   const RenderResult result = renderScene(scene, settings, &std::cout);
-  const std::vector<std::pair<std::string, std::string>> attributes = {{"hylios:seed", std::to_string(identity.seed)}};
+  const std::vector<std::pair<std::string, std::string>> attributes = renderAttributes(scene, result);
   if (!result.stopped) {
     for (const auto& path : writeFilmOutputs(*result.film, args.out, attributes))
       std::cout << "wrote " << path.string() << "\n";

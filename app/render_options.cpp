@@ -31,6 +31,16 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
                      "(0 = simulate everything; default: the scene's, else 1e-3)")
       ->check(CLI::Range(0.0, 1.0));
   command.add_flag("--explain", options.explain, "Print the effect plan (process, layer, optical depth, kept or skipped)");
+  command.add_option("--estimator", options.estimator,
+                     "spectral (a path carries every channel of a band; skin runs the spectral walk) or "
+                     "per-wavelength (one channel per path, the analog walk: the reference); default: the scene's, "
+                     "else spectral")
+      ->check(CLI::IsMember({"spectral", "per-wavelength"}));
+  command.add_option("--noise-target", options.noiseTarget,
+                     "Render in passes until the estimated median per-pixel relative noise over the pixels that see "
+                     "an object is at most this in every band (and R, G, B, chromaticity), or --spp is reached, "
+                     "e.g. 0.05")
+      ->check(CLI::Range(1e-6, 10.0));
 }
 
 RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {
@@ -45,6 +55,8 @@ RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {
   if (!options.skinMode.empty()) settings.skinMode = options.skinMode;
   if (options.effectTolerance >= 0) settings.effectTolerance = options.effectTolerance;
   settings.explain = options.explain;
+  if (!options.estimator.empty()) settings.estimator = skin::parseEstimator(options.estimator);
+  if (options.noiseTarget >= 0) settings.noiseTarget = options.noiseTarget;
   settings.progress = progressBarFactory();
   return settings;
 }

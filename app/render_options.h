@@ -20,8 +20,11 @@ struct RenderCommandOptions {
   std::string skinMode;        ///< "": the scene's
   double effectTolerance = -1; ///< < 0: the scene's
   bool explain = false;
+  std::string estimator;       ///< "": the scene's, else spectral or per-wavelength
+  double noiseTarget = -1;     ///< < 0: the scene's (if any)
 };
-/// Adds --spp, --resolution, --threads, --skin-model, --epsilon and --explain to `command`.
+/// Adds --spp, --resolution, --threads, --skin-model, --epsilon, --explain, --estimator and
+/// --noise-target to `command`.
 void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options);
 /// The settings of `options`, with a progress bar on stderr (drawn only on a terminal).
 RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options);

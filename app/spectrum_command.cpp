@@ -9,6 +9,7 @@
 
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/estimator_option.h"
 #include "renderer/scene/data_paths.h"
 #include "renderer/tracing/exit_table_cache.h"
 #include "app/gnuplot_plot.h"
@@ -19,6 +20,7 @@
 #include "app/wavelength_list.h"
 #include "skin/effect_plan.h"
 #include "skin/skin_simulation.h"
+#include "skin/spectral_simulation.h"
 #include "skin/core/thread_limit.h"
 
 namespace hylios {
@@ -37,6 +39,7 @@ struct SpectrumArguments {
   double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner; 0: full model
   bool explain = false;
   std::string skinModel = "walk";  ///< "table": rays sampled from the cached exit table (skin/exit_table.h)
+  std::string estimator = "spectral";  ///< or "per-wavelength" (the analog walk, the reference)
 };
 
 /// Full plan tables up to this many wavelengths, one summary line each beyond.
@@ -140,15 +143,27 @@ void runSpectrum(const SpectrumArguments& args) {
   std::vector<skin::SkinTally> tallies(wavelengths.size());
   std::vector<std::optional<skin::EffectPlan>> plans(wavelengths.size());
   ProgressBar progress("spectrum " + specimen.name, wavelengths.size());
-  tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {
-    plans[i] = planWavelength(args, optics[i]);
-    skin::WalkRunOptions planned = run;
-    if (plans[i]) planned.walk = plans[i]->walk;
-    const skin::SkinOptics& walked = plans[i] ? plans[i]->optics : optics[i];
-    tallies[i] = args.skinModel == "table" ? tableTally(skin::SkinWalk(walked, planned.walk), args)
-                                           : skin::simulateSkin(walked, planned);
-    progress.advance();
-  });
+  if (args.estimator == "spectral" && args.skinModel == "walk") {
+    // One path per bundle of wavelengths, the full model (no effect plan: bound 0), internal
+    // melanosome paths drawn from the 2¹⁸-path table (skin/spectral_walk.h).
+    skin::SpectralRunOptions spectral;
+    spectral.incidenceDeg = args.angleDeg;
+    spectral.rays = args.rays;
+    spectral.seed = args.seed;
+    spectral.walk.tabulatedMelanosomes = true;
+    tallies = skin::simulateSkinSpectral(optics, spectral);
+    progress.advance(wavelengths.size());
+  } else {
+    tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {
+      plans[i] = planWavelength(args, optics[i]);
+      skin::WalkRunOptions planned = run;
+      if (plans[i]) planned.walk = plans[i]->walk;
+      const skin::SkinOptics& walked = plans[i] ? plans[i]->optics : optics[i];
+      tallies[i] = args.skinModel == "table" ? tableTally(skin::SkinWalk(walked, planned.walk), args)
+                                             : skin::simulateSkin(walked, planned);
+      progress.advance();
+    });
+  }
   progress.finish();
   if (args.explain) printPlans(plans);
   writeTextAtomically(args.out, formatCsv(wavelengths, tallies, plans));
@@ -179,6 +194,7 @@ void registerSpectrumCommand(CLI::App& app) {
                       "walk (exact HyLIoS walk per ray) or table (rays sampled from exit tables cached in "
                       "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)")
       ->check(CLI::IsMember({"walk", "table"}));
+  addEstimatorOption(*command, args->estimator);
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   command->add_option("--epsilon", args->effectTolerance,
                       "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped, "

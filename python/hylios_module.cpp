@@ -217,6 +217,49 @@ std::vector<skin::SkinOptics> opticsOf(const skin::Specimen& specimen, const std
   return optics;
 }
 
+/// The estimators of the commands' --estimator option (app/estimator_option.cpp).
+void requireEstimator(const std::string& estimator) {
+  if (estimator != "spectral" && estimator != "per-wavelength")
+    throw std::invalid_argument("estimator '" + estimator + "': expected 'spectral' or 'per-wavelength'");
+}
+
+/// One tally per optics, as the commands' simulateWithEstimator (app/estimator_option.cpp): the
+/// analog walk per wavelength (per-wavelength), or the spectral walk with tabulated melanosome
+/// paths (spectral). The spectral walk is run one bundle at a time: a bundle's members regroup into
+/// that one bundle and its random stream depends only on its wavelengths, so the tallies are those
+/// of one simulateSkinSpectral call over all wavelengths, and a stop request takes effect between
+/// bundles. The per-wavelength walk stops between wavelengths.
+std::vector<skin::SkinTally> simulateTallies(const std::string& estimator, const std::vector<skin::SkinOptics>& optics,
+                                             const skin::WalkRunOptions& run, const StopFlag& stop,
+                                             ProgressBar* bar = nullptr) {
+  std::vector<skin::SkinTally> tallies(optics.size(), skin::SkinTally(run.tally));
+  if (estimator == "spectral") {
+    skin::SpectralRunOptions spectral;
+    spectral.incidenceDeg = run.incidenceDeg;
+    spectral.rays = run.rays;
+    spectral.seed = run.seed;
+    spectral.walk = run.walk;
+    spectral.walk.tabulatedMelanosomes = true;
+    spectral.tally = run.tally;
+    const auto bundles = skin::groupIntoBundles(optics, spectral.walk, spectral.bundles);
+    tbb::parallel_for(std::size_t{0}, bundles.size(), [&](std::size_t b) {
+      if (stop()) return;
+      std::vector<skin::SkinOptics> members;
+      for (std::size_t i : bundles[b]) members.push_back(optics[i]);
+      std::vector<skin::SkinTally> result = skin::simulateSkinSpectral(members, spectral);
+      for (std::size_t k = 0; k < bundles[b].size(); ++k) tallies[bundles[b][k]] = std::move(result[k]);
+      if (bar) bar->advance(bundles[b].size());
+    });
+  } else {
+    tbb::parallel_for(std::size_t{0}, optics.size(), [&](std::size_t i) {
+      if (stop()) return;
+      tallies[i] = skin::simulateSkin(optics[i], run);
+      if (bar) bar->advance();
+    });
+  }
+  return tallies;
+}
+
 // ---------------------------------------------------------------------------------------------
 // spectrum (app/spectrum_command.cpp).
 
@@ -268,12 +311,9 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
   r.effectTolerance = epsilon;
   r.skinModel = skinModel;
   r.progress = progress;
-  if (estimator != "spectral" && estimator != "per-wavelength")
-    throw std::invalid_argument("estimator '" + estimator + "': expected 'spectral' or 'per-wavelength'");
+  requireEstimator(estimator);
   if (skinModel != "walk" && skinModel != "table")
     throw std::invalid_argument("skin_model '" + skinModel + "': expected 'walk' or 'table'");
-  if (estimator == "spectral" && skinModel == "table")
-    throw std::invalid_argument("skin_model 'table' needs estimator 'per-wavelength'");
   if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
   if (rays < 1) throw std::invalid_argument("rays must be positive");
   if (!(epsilon >= 0 && epsilon <= 1)) throw std::invalid_argument("epsilon must lie in [0, 1]");
@@ -283,17 +323,22 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
   const std::size_t n = r.wavelengths.size();
   std::vector<skin::SkinTally> tallies(n);
   std::vector<double> effectBound(n, 0.0);
-  const bool cancellable = estimator == "per-wavelength" && skinModel == "walk";
+  // As the command: the spectral walk (full model, no effect plan) unless table mode was asked
+  // for; otherwise per wavelength, the effect plan's walk or the exit table.
+  const bool spectral = r.estimator == "spectral" && r.skinModel == "walk";
+  const bool cancellable = !spectral && skinModel == "walk";
   runInterruptible(
       [&](const StopFlag& stop) {
         const ThreadLimit threadLimit(r.threads);
         std::unique_ptr<ProgressBar> bar;
-        if (r.estimator == "per-wavelength") {
-          if (r.progress) bar = std::make_unique<ProgressBar>("spectrum " + s.specimen.name, n);
-          skin::WalkRunOptions run;
-          run.incidenceDeg = r.angleDeg;
-          run.rays = r.rays;
-          run.seed = r.seed;
+        if (r.progress) bar = std::make_unique<ProgressBar>("spectrum " + s.specimen.name, n);
+        skin::WalkRunOptions run;
+        run.incidenceDeg = r.angleDeg;
+        run.rays = r.rays;
+        run.seed = r.seed;
+        if (spectral) {
+          tallies = simulateTallies("spectral", optics, run, stop, bar.get());
+        } else {
           tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
             if (stop()) return;
             const std::optional<skin::EffectPlan> plan = planWavelength(r, optics[i]);
@@ -304,26 +349,6 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
                                                 : skin::simulateSkin(walked, planned);
             effectBound[i] = plan ? plan->droppedDepthBound : 0.0;
             if (bar) bar->advance();
-          });
-        } else {
-          // The spectral walk (skin/spectral_simulation.h) with tabulated melanosomes. It is run
-          // one bundle at a time: a bundle's members regroup into that one bundle and its random
-          // stream depends only on its wavelengths, so the tallies are those of one call over all
-          // wavelengths, and a stop request takes effect between bundles.
-          skin::SpectralRunOptions run;
-          run.incidenceDeg = r.angleDeg;
-          run.rays = r.rays;
-          run.seed = r.seed;
-          run.walk.tabulatedMelanosomes = true;
-          const auto bundles = skin::groupIntoBundles(optics, run.walk, run.bundles);
-          if (r.progress) bar = std::make_unique<ProgressBar>("spectrum " + s.specimen.name, n);
-          tbb::parallel_for(std::size_t{0}, bundles.size(), [&](std::size_t b) {
-            if (stop()) return;
-            std::vector<skin::SkinOptics> members;
-            for (std::size_t i : bundles[b]) members.push_back(optics[i]);
-            std::vector<skin::SkinTally> result = skin::simulateSkinSpectral(members, run);
-            for (std::size_t k = 0; k < bundles[b].size(); ++k) tallies[bundles[b][k]] = std::move(result[k]);
-            if (bar) bar->advance(bundles[b].size());
           });
         }
         if (bar && !stop()) bar->finish();
@@ -426,7 +451,9 @@ py::dict directions(const skin::ReflectedDirections& r, std::size_t polar, std::
 }
 
 py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double angleDeg, std::uint64_t rays,
-              std::uint64_t seed, std::size_t polarBins, std::size_t azimuthBins, int threads) {
+              std::uint64_t seed, std::size_t polarBins, std::size_t azimuthBins, const std::string& estimator,
+              int threads) {
+  requireEstimator(estimator);
   if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
   if (rays < 1) throw std::invalid_argument("rays must be positive");
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
@@ -444,13 +471,12 @@ py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double ang
   runInterruptible(
       [&](const StopFlag& stop) {
         const ThreadLimit threadLimit(threads);
-        tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {
-          if (stop()) return;
-          perWavelength[i] = skin::reflectionDistribution(skin::simulateSkin(optics[i], run));
-        });
-        if (!stop()) mean = skin::meanOverWavelengths(perWavelength);
+        const std::vector<skin::SkinTally> tallies = simulateTallies(estimator, optics, run, stop);
+        if (stop()) return;
+        for (std::size_t i = 0; i < tallies.size(); ++i) perWavelength[i] = skin::reflectionDistribution(tallies[i]);
+        mean = skin::meanOverWavelengths(perWavelength);
       },
-      true);
+      estimator == "per-wavelength");
   std::vector<double> polarLower, polarUpper, azimuthLower, azimuthUpper, solidAngle;
   for (std::size_t i = 0; i < bins.polarBins(); ++i) {
     polarLower.push_back(bins.polarLowerRad(i) * kDegPerRad);
@@ -491,7 +517,9 @@ py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double ang
 // radial-profile (app/radial_profile_command.cpp).
 
 py::dict radialProfile(const PySpecimen& s, double wavelengthNm, double angleDeg, std::uint64_t rays,
-                       std::uint64_t seed, double maxRadiusCm, std::size_t bins, int threads) {
+                       std::uint64_t seed, double maxRadiusCm, std::size_t bins, const std::string& estimator,
+                       int threads) {
+  requireEstimator(estimator);
   if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
   if (rays < 1) throw std::invalid_argument("rays must be positive");
   if (!(maxRadiusCm > 0)) throw std::invalid_argument("max_radius_cm must be positive");
@@ -509,10 +537,10 @@ py::dict radialProfile(const PySpecimen& s, double wavelengthNm, double angleDeg
   runInterruptible(
       [&](const StopFlag& stop) {
         const ThreadLimit threadLimit(threads);
-        skin::SkinTally tally = skin::simulateSkin(optics, run);
-        if (!stop()) p = skin::radialProfile(tally);
+        const std::vector<skin::SkinTally> tallies = simulateTallies(estimator, {optics}, run, stop);
+        if (!stop()) p = skin::radialProfile(tallies.front());
       },
-      true);
+      estimator == "per-wavelength");
   std::vector<double> area;
   for (std::size_t i = 0; i < p.perCm2.size(); ++i) area.push_back(skin::annulusAreaCm2(p.innerCm[i], p.outerCm[i]));
   const auto [fraction, fractionErr] = split(p.fraction);
@@ -753,9 +781,11 @@ PYBIND11_MODULE(_hylios, m) {
         py::arg("progress"), "See hylios.spectrum");
   m.def("coefficients", &coefficients, py::arg("specimen"), py::arg("wavelengths"), "See hylios.coefficients");
   m.def("brdf", &brdf, py::arg("specimen"), py::arg("wavelengths"), py::arg("angle_deg"), py::arg("rays"),
-        py::arg("seed"), py::arg("polar_bins"), py::arg("azimuth_bins"), py::arg("threads"), "See hylios.brdf");
+        py::arg("seed"), py::arg("polar_bins"), py::arg("azimuth_bins"), py::arg("estimator"), py::arg("threads"),
+        "See hylios.brdf");
   m.def("radial_profile", &radialProfile, py::arg("specimen"), py::arg("wavelength_nm"), py::arg("angle_deg"),
-        py::arg("rays"), py::arg("seed"), py::arg("max_radius_cm"), py::arg("bins"), py::arg("threads"),
+        py::arg("rays"), py::arg("seed"), py::arg("max_radius_cm"), py::arg("bins"), py::arg("estimator"),
+        py::arg("threads"),
         "See hylios.radial_profile");
   m.def("render", &render, py::arg("scene_path"), py::arg("spp"), py::arg("width"), py::arg("height"),
         py::arg("seed"), py::arg("threads"), py::arg("skin_model"), py::arg("epsilon"), py::arg("noise_target"),

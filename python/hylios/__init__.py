@@ -199,10 +199,11 @@ def spectrum(specimen, wavelengths, angle_deg=45, rays=100000, seed=1, estimator
     specimen: a ``Specimen`` (or a name/path); wavelengths: 'start:stop:step', a comma list, a
     number or a sequence/array (nm); angle_deg: incidence from the normal in [0, 90); rays: per
     wavelength; seed: the same seed gives the same numbers at any thread count; estimator:
-    "spectral" (paths shared by bundles of wavelengths, skin/spectral_simulation.h, tabulated
-    melanosome absorption) or "per-wavelength" (the exact walk per wavelength,
-    skin/skin_simulation.h, with the effect planner of tolerance ``epsilon``, 0 = full model, and
-    ``skin_model`` "walk" or "table" for the cached exit tables); threads: 0 = all cores;
+    "spectral" (the default of the command: paths shared by bundles of wavelengths,
+    skin/spectral_simulation.h, tabulated melanosome paths, the full model) or "per-wavelength"
+    (the analog walk per wavelength, skin/skin_simulation.h, with the effect planner of tolerance
+    ``epsilon``, 0 = full model); skin_model "table" samples the cached exit tables per wavelength
+    (with the planner, whatever the estimator, as the command does); threads: 0 = all cores;
     progress: draw the command's progress bar on a terminal's stderr.
 
     Returns a ``Result`` with arrays over the wavelengths: ``wavelength_nm, reflectance,
@@ -239,11 +240,12 @@ def coefficients(specimen, wavelengths):
 
 
 def brdf(specimen, wavelengths="380:780:10", angle_deg=45, rays=200000, seed=1, polar_bins=18,
-         azimuth_bins=36, threads=0):
+         azimuth_bins=36, estimator="spectral", threads=0):
     """Angular distribution of reflected light (``hylios brdf``, paper Figs. 10-11).
 
     Several wavelengths are averaged with equal weight (the default is the command's --visible
-    band, 380-780 nm every 10 nm). Returns a ``Result`` with the bin edges ``polar_lower_deg,
+    band, 380-780 nm every 10 nm). estimator: "spectral" or "per-wavelength" as in ``spectrum``
+    (no effect planner here, as in the command). Returns a ``Result`` with the bin edges ``polar_lower_deg,
     polar_upper_deg`` [polar], ``azimuth_lower_deg, azimuth_upper_deg`` [azimuth] (0 = specular
     side), ``solid_angle_sr`` [polar]; ``per_sr`` (fraction of incident rays per sr = BRDF*cos)
     and ``brdf``, each a ``Result`` of ``surface, subsurface, total`` and their ``*_stderr``
@@ -253,7 +255,7 @@ def brdf(specimen, wavelengths="380:780:10", angle_deg=45, rays=200000, seed=1, 
     """
     d = _hylios.brdf(_specimen(specimen), _wavelength_text(wavelengths), float(angle_deg),
                      _count("rays", rays), _count("seed", seed), _count("polar_bins", polar_bins),
-                     _count("azimuth_bins", azimuth_bins), _count("threads", threads))
+                     _count("azimuth_bins", azimuth_bins), str(estimator), _count("threads", threads))
     values = dict(d)
     values["per_sr"] = Result("Directions", dict(d["per_sr"]))
     values["brdf"] = Result("Directions", dict(d["brdf"]))
@@ -264,9 +266,9 @@ def brdf(specimen, wavelengths="380:780:10", angle_deg=45, rays=200000, seed=1, 
 
 
 def radial_profile(specimen, wavelength_nm=550, angle_deg=0, rays=1000000, seed=1,
-                   max_radius_cm=0.5, bins=100, threads=0):
+                   max_radius_cm=0.5, bins=100, estimator="spectral", threads=0):
     """Subsurface reflectance per unit area vs distance from the entry point, R(r) in cm^-2
-    (``hylios radial-profile``, the radial part of the BSSRDF).
+    (``hylios radial-profile``, the radial part of the BSSRDF); estimator as in ``brdf``.
 
     Returns a ``Result`` with arrays over annuli ``inner_radius_cm, outer_radius_cm,
     annulus_area_cm2, fraction, fraction_stderr, reflectance_per_cm2,
@@ -275,7 +277,7 @@ def radial_profile(specimen, wavelength_nm=550, angle_deg=0, rays=1000000, seed=
     """
     d = _hylios.radial_profile(_specimen(specimen), float(wavelength_nm), float(angle_deg),
                                _count("rays", rays), _count("seed", seed), float(max_radius_cm),
-                               _count("bins", bins), _count("threads", threads))
+                               _count("bins", bins), str(estimator), _count("threads", threads))
     values = dict(d)
     for key in ("beyond_max_radius", "subsurface_reflectance"):
         values[key] = (d[key]["mean"], d[key]["stderr"])

@@ -16,6 +16,7 @@
 
 #include "skin/core/source_location.h"
 #include "skin/effect_plan.h"
+#include "skin/estimator.h"
 #include "skin/specimen.h"
 
 namespace hylios {
@@ -134,6 +135,12 @@ struct IntegratorDesc {
   std::uint64_t seed = 1;
   std::string skinMode = "walk";       ///< "walk" (exact HyLIoS walk at every hit) or "table" (issue 5)
   double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner (skin/effect_plan.h)
+  /// spectral: a camera path carries every channel of a band (hero wavelengths) and skin hits run
+  /// the spectral walk; per-wavelength: one channel per path and the analog walk (the reference).
+  skin::Estimator estimator = skin::Estimator::Spectral;
+  /// Render in passes until the film's estimated median per-pixel relative noise is at most this
+  /// (every band, R, G, B and chromaticity), or spp is reached; unset: render spp samples.
+  std::optional<double> noiseTarget;
   SourceLocation where;
 };
 

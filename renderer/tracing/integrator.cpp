@@ -12,6 +12,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "renderer/image/film_output.h"
 #include "renderer/scene/data_paths.h"
 #include "renderer/scene/emission_spectrum.h"
 #include "skin/sampling/cosine_sampling.h"
@@ -67,8 +68,14 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
   for (const auto& m : scene.materials) anySkin = anySkin || m.kind == MaterialDesc::Kind::Skin;
   std::unique_ptr<skin::SpectralDatabase> spectra;
   if (anySkin) spectra = std::make_unique<skin::SpectralDatabase>(skin::SpectralDatabase::load(spectraDir()));
+  spectral_ = scene.integrator.estimator == skin::Estimator::Spectral && scene.integrator.skinMode != "table";
+  std::vector<std::vector<std::size_t>> bundles;  // the film's bands, as channel lists
+  if (spectral_) {
+    const Film layout(scene.film);
+    for (std::size_t b = 0; b < layout.bandCount(); ++b) bundles.push_back(layout.bandChannels(b));
+  }
   for (std::size_t i = 0; i < scene.materials.size(); ++i)
-    materials_.push_back(makeMaterial(scene, i, channelWavelengths, spectra.get()));
+    materials_.push_back(makeMaterial(scene, i, channelWavelengths, spectra.get(), bundles));
   for (const ShapeDesc& shape : scene.shapes) {
     std::size_t index = scene.materials.size();
     for (std::size_t i = 0; i < scene.materials.size(); ++i)
@@ -80,7 +87,8 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
 
 Integrator::Material Integrator::makeMaterial(const SceneDesc& scene, std::size_t index,
                                               const std::vector<double>& channelWavelengths,
-                                              const skin::SpectralDatabase* spectra) {
+                                              const skin::SpectralDatabase* spectra,
+                                              const std::vector<std::vector<std::size_t>>& bundles) {
   const MaterialDesc& desc = scene.materials[index];
   Material m;
   m.kind = desc.kind;
@@ -107,7 +115,7 @@ Integrator::Material Integrator::makeMaterial(const SceneDesc& scene, std::size_
       if (!used) break;  // only the skin that the scene shows is prepared
       const skin::Specimen specimen = loadMaterialSpecimen(desc, specimenDir());
       m.skin = std::make_unique<SkinMaterial>(desc, specimen, index, scene.unitCm, channelWavelengths, *spectra,
-                                              scene.integrator.skinMode, scene.integrator.effectTolerance);
+                                              scene.integrator.skinMode, scene.integrator.effectTolerance, bundles);
       break;
     }
   }
@@ -146,18 +154,28 @@ Ray Integrator::spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, con
 }
 
 template <typename Lobe>
-double Integrator::directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal, std::size_t channel,
-                               skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const {
+std::optional<Integrator::DirectSample> Integrator::directLight(const glm::dvec3& point,
+                                                               const glm::dvec3& geometricNormal, skin::Rng& rng,
+                                                               bool deltaOnly, const Lobe& lobe) const {
   const double uSelect = rng.uniform(), u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
-  const std::optional<LightSample> light = lights_->sample(point, channel, uSelect, u0, u1, u2);
-  if (!light || (deltaOnly && !light->isDelta)) return 0;
-  if (!(glm::dot(light->direction, geometricNormal) > 0)) return 0;
+  const std::optional<LightSample> light = lights_->sampleGeometry(point, uSelect, u0, u1, u2);
+  if (!light || (deltaOnly && !light->isDelta)) return std::nullopt;
+  if (!(glm::dot(light->direction, geometricNormal) > 0)) return std::nullopt;
   const double f = lobe(light->direction);
-  if (!(f > 0)) return 0;
+  if (!(f > 0)) return std::nullopt;
   const Ray shadow = spawn(point, geometricNormal, light->direction, light->distance);
-  if (!lights_->visible(shadow.origin, *light, glm::length(shadow.origin - point))) return 0;
+  if (!lights_->visible(shadow.origin, *light, glm::length(shadow.origin - point))) return std::nullopt;
   const double weight = light->isDelta ? 1.0 : powerHeuristic(light->pdf, f);
-  return f * light->value * weight / light->pdf;
+  return DirectSample{*light, f * weight / light->pdf};
+}
+
+void Integrator::addDirect(const std::optional<DirectSample>& direct, const PathSpectrum& spectrum,
+                           const double* beta, const double* albedo, double* L) const {
+  if (!direct) return;
+  for (std::size_t i = 0; i < spectrum.size(); ++i) {
+    const double e = lights_->emission(direct->light, spectrum[i]);
+    L[i] += beta[i] * (albedo ? albedo[i] : 1.0) * e * direct->factor;
+  }
 }
 
 Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit, skin::Rng& rng,
@@ -179,31 +197,42 @@ Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const 
   return spawn(hit.position, facing, direction, std::numeric_limits<double>::infinity());
 }
 
-double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng& rng, RenderStats& stats) const {
+void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
+                          double* L) const {
   ++stats.paths;
+  const std::size_t n = spectrum.size();
   const int maxDepth = scene_.integrator.maxDepth;
   Ray ray = cameraRay;
-  double L = 0, beta = 1;
+  thread_local std::vector<double> betaStore, albedoStore;
+  betaStore.assign(n, 1.0);
+  albedoStore.assign(n, 0.0);
+  double* beta = betaStore.data();
+  double* albedo = albedoStore.data();
+  std::fill(L, L + n, 0.0);
   bool lastSpecular = true;  // camera, dielectric or skin surface reflection: emitters count fully
   double lastPdf = 0;        // density (sr⁻¹) of the continued direction, for MIS at emitters
   glm::dvec3 lastPoint = ray.origin;
+  auto anyThroughput = [&] { return std::any_of(beta, beta + n, [](double b) { return b > 0; }); };
   for (int depth = 0;; ++depth) {
     const std::optional<SurfaceHit> hit = geometry_->intersect(ray);
     if (!hit) {
-      if (lights_->hasEnvironment())
-        L += beta * lights_->environmentRadiance(channel) *
-             (lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->environmentPdf()));
+      if (lights_->hasEnvironment()) {
+        const double mis = lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->environmentPdf());
+        for (std::size_t i = 0; i < n; ++i) L[i] += beta[i] * lights_->environmentRadiance(spectrum[i]) * mis;
+      }
       break;
     }
     if (lights_->isEmitter(hit->shape)) {
-      const double emitted = lights_->emittedRadiance(*hit, -ray.direction, channel);
-      if (emitted > 0)
-        L += beta * emitted * (lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->emitterPdf(lastPoint, *hit)));
+      const double mis = lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->emitterPdf(lastPoint, *hit));
+      for (std::size_t i = 0; i < n; ++i)
+        L[i] += beta[i] * lights_->emittedRadiance(*hit, -ray.direction, spectrum[i]) * mis;
     }
     if (depth >= maxDepth) break;
     const Material& material = materials_[materialOfShape_[hit->shape]];
     if (material.kind == MaterialDesc::Kind::Dielectric) {
-      ray = scatterDielectric(material.refractiveIndex, ray, *hit, rng, beta);
+      double scale = 1;  // the index is the same at every wavelength: the bundle stays together
+      ray = scatterDielectric(material.refractiveIndex, ray, *hit, rng, scale);
+      for (std::size_t i = 0; i < n; ++i) beta[i] *= scale;
       lastSpecular = true;
       continue;
     }
@@ -211,9 +240,10 @@ double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng
     const FacingNormals facing = faceTheRay(ray.direction, hit->geometricNormal, hit->shadingNormal);
     glm::dvec3 ng = facing.geometric, ns = facing.shading;
     glm::dvec3 point = hit->position;
+    const double* lobeAlbedo = nullptr;
     if (material.kind == MaterialDesc::Kind::Skin) {
       ++stats.skinWalks;
-      const SkinScatter s = material.skin->scatter(*hit, ray.direction, channel, *geometry_, materialOfShape_, rng);
+      const SkinScatter s = scatterSkin(*material.skin, *hit, ray.direction, spectrum, rng, beta);
       if (s.kind == SkinScatter::Kind::Absorbed) {
         ++stats.skinAbsorbed;
         break;
@@ -225,13 +255,14 @@ double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng
       if (s.kind == SkinScatter::Kind::SurfaceReflection) {
         ++stats.skinSurfaceExits;
         const glm::dvec3 incident = ray.direction, normal = s.shadingNormal;
-        L += beta * directLight(s.point, s.geometricNormal, channel, rng, true, [&](const glm::dvec3& w) {
-               return material.skin->surfaceLobeDensity(incident, normal, w);
-             });
+        addDirect(directLight(s.point, s.geometricNormal, rng, true,
+                              [&](const glm::dvec3& w) { return material.skin->surfaceLobeDensity(incident, normal, w); }),
+                  spectrum, beta, nullptr, L);
         if (!(glm::dot(s.direction, s.geometricNormal) > 0)) {
           ++stats.belowSurface;
           break;
         }
+        if (!anyThroughput()) break;
         ray = spawn(s.point, s.geometricNormal, s.direction, std::numeric_limits<double>::infinity());
         lastSpecular = true;
         lastPoint = s.point;
@@ -242,16 +273,17 @@ double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng
       point = s.point;
       ng = s.geometricNormal;
       ns = s.shadingNormal;
-      // The Lambertian exit lobe (albedo 1: the walk already decided that the light left).
-      const auto lobe = [&](const glm::dvec3& w) { return std::max(0.0, glm::dot(w, ns)) / kPi; };
-      L += beta * directLight(point, ng, channel, rng, false, lobe);
     } else {  // diffuse
-      const double rho = material.reflectance[channel];
-      const auto lobe = [&](const glm::dvec3& w) { return std::max(0.0, glm::dot(w, ns)) / kPi; };
-      L += beta * rho * directLight(point, ng, channel, rng, false, lobe);
-      beta *= rho;
-      if (!(beta > 0)) break;
+      for (std::size_t i = 0; i < n; ++i) albedo[i] = material.reflectance[spectrum[i]];
+      lobeAlbedo = albedo;
     }
+    // A Lambertian lobe: the diffuse material's, or the skin's exit lobe (albedo 1: the walk
+    // already weighted the light that left).
+    const auto lobe = [&](const glm::dvec3& w) { return std::max(0.0, glm::dot(w, ns)) / kPi; };
+    addDirect(directLight(point, ng, rng, false, lobe), spectrum, beta, lobeAlbedo, L);
+    if (lobeAlbedo)
+      for (std::size_t i = 0; i < n; ++i) beta[i] *= lobeAlbedo[i];
+    if (!anyThroughput()) break;
     const glm::dvec3 direction = sampleCosine(ns, rng);
     if (!(glm::dot(direction, ng) > 0)) {
       ++stats.belowSurface;
@@ -262,10 +294,45 @@ double Integrator::radiance(const Ray& cameraRay, std::size_t channel, skin::Rng
     lastPoint = point;
     ray = spawn(point, ng, direction, std::numeric_limits<double>::infinity());
   }
+}
+
+double Integrator::radiance(const Ray& ray, std::size_t channel, skin::Rng& rng, RenderStats& stats) const {
+  const std::size_t channels[1] = {channel};
+  double L = 0;
+  radiance(ray, PathSpectrum{channels, 1, 0, false}, rng, stats, &L);
   return L;
 }
 
+SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& direction,
+                                    const PathSpectrum& spectrum, skin::Rng& rng, double* beta) const {
+  if (!spectrum.spectral)
+    return skin.scatter(hit, direction, spectrum[0], *geometry_, materialOfShape_, rng);
+  thread_local std::vector<double> weights;
+  weights.resize(spectrum.size());
+  const SkinScatter s = skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_, materialOfShape_, rng,
+                                             weights.data());
+  for (std::size_t i = 0; i < spectrum.size(); ++i) beta[i] *= weights[i];
+  return s;
+}
+
+void Integrator::setCoverage(Film& film) const {
+  const int width = film.width(), height = film.height();
+  std::vector<char> seen(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+  tbb::parallel_for(0, height, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const std::optional<SurfaceHit> hit = geometry_->intersect(camera_->generateRay(x + 0.5, y + 0.5, 0.5, 0.5));
+      seen[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+          hit && !lights_->isEmitter(hit->shape);
+    }
+  });
+  film.setCoverage(std::vector<bool>(seen.begin(), seen.end()));
+}
+
 RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
+  if (film.samplesPerPixelDone() > 0 && film.wholeBandSamples() != spectral_)
+    throw std::invalid_argument("Integrator::render: the film was filled by the other estimator");
+  film.setWholeBandSamples(spectral_);
+  if (film.coverage().empty()) setCoverage(film);
   if (film.channels().size() != wavelengths_.size())
     throw std::invalid_argument("Integrator::render: the film's channels differ from the integrator's");
   for (std::size_t c = 0; c < wavelengths_.size(); ++c)
@@ -302,14 +369,22 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
     done = end;
     film.setSamplesPerPixelDone(done);
     if (options.onPassDone) options.onPassDone(done, seconds);
+    if (options.noiseTarget && done >= kMinNoiseSamples) {
+      total.noise = filmNoise(film);
+      if (worstNoise(total.noise) <= *options.noiseTarget) {
+        total.noiseTargetReached = true;
+        break;
+      }
+    }
     if (options.samplesPerPass == 0 && seconds < kAdaptivePassSeconds && passSamples < (1 << 24)) {
       // Aim the next pass at kAdaptivePassSeconds, growing at most 8-fold (the first passes warm up).
       const double factor = std::min(8.0, std::round(kAdaptivePassSeconds / std::max(seconds, 1e-9)));
       passSamples *= std::max(1, static_cast<int>(factor));
     }
   }
+  if (options.noiseTarget && total.noise.empty() && done > 1) total.noise = filmNoise(film);
   if (progress) {
-    if (done == spp)
+    if (done == spp || total.noiseTargetReached)
       progress->finish();
     else
       progress->stop();
@@ -321,14 +396,15 @@ bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
                             RenderProgress* progress, const std::function<bool()>& abandon) const {
   std::atomic<bool> abandoned{false};
   const int width = film.width(), height = film.height();
-  const int spp = film.desc().samplesPerPixel;
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
   const std::size_t tiles = static_cast<std::size_t>(tilesX) * static_cast<std::size_t>(tilesY);
   std::mutex totalMutex;
   const std::uint64_t seed = scene_.integrator.seed;
+  const std::uint64_t strata = spectral_ ? film.bandCount() : film.channels().size();
   constexpr std::uint64_t kChannelRotationStream = ~std::uint64_t{0};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles, 1), [&](const tbb::blocked_range<std::size_t>& range) {
     RenderStats stats;
+    std::vector<double> values;
     for (std::size_t tile = range.begin(); tile != range.end(); ++tile) {
       if (abandoned.load(std::memory_order_relaxed) || (abandon && abandon())) {
         abandoned.store(true, std::memory_order_relaxed);
@@ -340,19 +416,32 @@ bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
         for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
           const std::uint64_t pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) +
                                       static_cast<std::uint64_t>(x);
-          // Channels are stratified over the pixel's samples (sample s takes the s-th of spp equal
-          // slices of [0, 1), jittered; spp is the target, not the pass), with a per-pixel rotation
-          // (Cranley–Patterson) drawn from its own stream: with spp ≥ the number of channels every
-          // channel of the pixel gets a sample, and no channel is skipped in the same way for every pixel.
-          const double rotation = skin::Rng(seed, pixel, kChannelRotationStream).uniform();
+          // Bands (spectral) or channels (per-wavelength) are stratified over blocks of `strata`
+          // consecutive samples of the pixel (sample s takes slice s mod strata of [0, 1), jittered),
+          // each block with its own rotation (Cranley–Patterson) from its own stream: every complete
+          // block meets every band or channel once, whenever the render stops (noise targets).
           for (int s = firstSample; s < endSample; ++s) {
+            const std::uint64_t block = static_cast<std::uint64_t>(s) / strata;
+            const double rotation = skin::Rng(seed, pixel, kChannelRotationStream - block).uniform();
             skin::Rng rng(seed, pixel, static_cast<std::uint64_t>(s));
-            double u = (static_cast<double>(s) + rng.uniform()) / static_cast<double>(spp) + rotation;
+            double u = (static_cast<double>(static_cast<std::uint64_t>(s) % strata) + rng.uniform()) /
+                           static_cast<double>(strata) + rotation;
             u -= std::floor(u);
-            const std::size_t channel = film.sampleChannel(u < 1.0 ? u : skin::kOneMinusEpsilon);
+            u = u < 1.0 ? u : skin::kOneMinusEpsilon;
             const double px = x + rng.uniform(), py = y + rng.uniform();
             const double lu = rng.uniform(), lv = rng.uniform();
-            film.addSample(x, y, channel, radiance(camera_->generateRay(px, py, lu, lv), channel, rng, stats));
+            const Ray cameraRay = camera_->generateRay(px, py, lu, lv);
+            const bool odd = (s & 1) != 0;
+            if (spectral_) {  // the path carries every channel of a band
+              const std::size_t band = film.sampleBand(u);
+              const std::vector<std::size_t>& channels = film.bandChannels(band);
+              values.resize(channels.size());
+              radiance(cameraRay, PathSpectrum{channels.data(), channels.size(), band, true}, rng, stats, values.data());
+              film.addBandSample(x, y, band, values.data(), odd);
+            } else {
+              const std::size_t channel = film.sampleChannel(u);
+              film.addSample(x, y, channel, radiance(cameraRay, channel, rng, stats), odd);
+            }
           }
         }
       if (progress) progress->advance(static_cast<std::uint64_t>(endSample - firstSample));

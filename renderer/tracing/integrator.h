@@ -1,5 +1,9 @@
-// The spectral path tracer: one wavelength per camera path (a film channel drawn by
-// Film::sampleChannel), next-event estimation with multiple importance sampling (power heuristic,
+// The spectral path tracer. Spectral estimator (the default in walk mode): a camera path carries
+// every channel of one band (Film::sampleBand, stratified over the pixel's samples) with a
+// throughput per channel — hero wavelengths in the manner of pbrt-v4's SampledWavelengths; nothing
+// here is dispersive (dielectrics have one index), so a bundle never splits, and skin hits run the
+// band's spectral walk (skin_material.h). Per-wavelength estimator (and table mode): one wavelength
+// per camera path (a film channel drawn by Film::sampleChannel). Next-event estimation with multiple importance sampling (power heuristic,
 // β = 2) for area and environment lights, delta point/spot lights by next-event estimation only.
 //
 // Materials (MaterialDesc):
@@ -20,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +32,7 @@
 #include "renderer/tracing/camera.h"
 #include "renderer/tracing/embree_scene.h"
 #include "renderer/image/film.h"
+#include "renderer/image/render_noise.h"
 #include "renderer/tracing/lights.h"
 #include "renderer/tracing/render_progress.h"
 #include "renderer/scene/scene.h"
@@ -46,6 +52,9 @@ struct RenderStats {
   std::uint64_t exitFallbacks = 0;          ///< subsurface exits not projected onto the surface
   std::uint64_t belowSurface = 0;           ///< continuations below the geometric surface (path ended)
   void add(const RenderStats& o);
+  // Set by Integrator::render (not counters): the last noise estimate when a target was given.
+  std::vector<GroupNoise> noise;
+  bool noiseTargetReached = false;
 };
 
 /// Sample passes: render() adds samples to every pixel pass by pass (samples [a, b) of every
@@ -64,7 +73,12 @@ struct RenderOptions {
   std::function<bool()> stopRequested;
   /// Called after each completed pass with the samples per pixel done and the pass's duration.
   std::function<void(int samplesDone, double passSeconds)> onPassDone;
+  /// Stop once the film's own noise estimate (renderer/image/film_output.h's filmNoise: every
+  /// band, R, G, B and chromaticity) is at most this, checked after each pass from
+  /// kMinNoiseSamples samples per pixel on; the film's spp is then the cap.
+  std::optional<double> noiseTarget;
 };
+constexpr int kMinNoiseSamples = 8;
 constexpr double kAdaptivePassSeconds = 2.0;
 
 /// Options for a render without a progress bar (tests, batch use).
@@ -87,8 +101,21 @@ class Integrator {
   /// A film continued from a saved state gets exactly the sums of an uninterrupted render.
   RenderStats render(Film& film, const RenderOptions& options = {}) const;
 
-  /// Radiance along `ray` at channel `channel` (one path).
+  /// The film channels one camera path carries: one channel (per-wavelength estimator) or every
+  /// channel of band `bundle` (spectral estimator: the skin runs that band's spectral walk).
+  struct PathSpectrum {
+    const std::size_t* channels;
+    std::size_t count;
+    std::size_t bundle;
+    bool spectral;
+    std::size_t size() const { return count; }
+    std::size_t operator[](std::size_t i) const { return channels[i]; }
+  };
+  /// Radiance along `ray` at each channel of `spectrum` (one path), into L[0 .. size).
+  void radiance(const Ray& ray, const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats, double* L) const;
+  /// Radiance along `ray` at channel `channel` (one path, per-wavelength estimator).
   double radiance(const Ray& ray, std::size_t channel, skin::Rng& rng, RenderStats& stats) const;
+  skin::Estimator estimator() const { return spectral_ ? skin::Estimator::Spectral : skin::Estimator::PerWavelength; }
 
   const Camera& camera() const { return *camera_; }
   const EmbreeScene& geometry() const { return *geometry_; }
@@ -105,11 +132,24 @@ class Integrator {
     double refractiveIndex = 1.5;          ///< dielectric
     std::unique_ptr<SkinMaterial> skin;
   };
+  /// A light sample that reached the shading point: contribution = factor × emission(light, λ).
+  struct DirectSample {
+    LightSample light;
+    double factor;  ///< lobe density × MIS weight / pdf
+  };
   /// Next-event estimate at `point` for a lobe density `lobe(ω)` (per sr, cos included);
-  /// deltaOnly: only point/spot lights.
+  /// deltaOnly: only point/spot lights. nullopt when nothing arrives.
   template <typename Lobe>
-  double directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal, std::size_t channel,
-                     skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const;
+  std::optional<DirectSample> directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal,
+                                          skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const;
+  /// L[i] += beta[i] · albedo[i] (1 when null) · the direct sample at channel spectrum[i].
+  void addDirect(const std::optional<DirectSample>& direct, const PathSpectrum& spectrum, const double* beta,
+                 const double* albedo, double* L) const;
+  /// The skin walk at a hit for the path's spectrum; multiplies beta by the exit weights (spectral).
+  SkinScatter scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& direction,
+                          const PathSpectrum& spectrum, skin::Rng& rng, double* beta) const;
+  /// Marks the pixels whose centre ray sees a shape that does not emit (the noise mask).
+  void setCoverage(Film& film) const;
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
   /// Returns false when `abandon` (checked before each tile) asked to stop: the film then holds
   /// part of the pass and must not be written.
@@ -123,7 +163,8 @@ class Integrator {
   /// The material `index` of `scene` prepared for the channel wavelengths (skin: its walks or tables,
   /// only when a shape shows it). `spectra` may be null when the scene has no skin.
   static Material makeMaterial(const SceneDesc& scene, std::size_t index, const std::vector<double>& channelWavelengths,
-                               const skin::SpectralDatabase* spectra);
+                               const skin::SpectralDatabase* spectra,
+                               const std::vector<std::vector<std::size_t>>& bundles);
 
   SceneDesc scene_;
   std::vector<double> wavelengths_;
@@ -133,6 +174,7 @@ class Integrator {
   std::vector<Material> materials_;
   std::vector<std::size_t> materialOfShape_;
   double rayOffset_ = 1e-5;
+  bool spectral_ = true;  ///< the spectral estimator (bands per path) in walk mode
 };
 
 }  // namespace hylios

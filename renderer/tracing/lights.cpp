@@ -64,12 +64,26 @@ double LightSet::spotFalloff(const Light& light, const glm::dvec3& towardPoint) 
 
 std::optional<LightSample> LightSet::sample(const glm::dvec3& point, std::size_t channel, double uSelect, double u0,
                                             double u1, double u2) const {
+  std::optional<LightSample> s = sampleGeometry(point, uSelect, u0, u1, u2);
+  if (!s) return std::nullopt;
+  s->value = emission(*s, channel);
+  if (!(s->value > 0)) return std::nullopt;
+  return s;
+}
+
+double LightSet::emission(const LightSample& sample, std::size_t channel) const {
+  return lights_[sample.light].emission[channel] * sample.geometry;
+}
+
+std::optional<LightSample> LightSet::sampleGeometry(const glm::dvec3& point, double uSelect, double u0, double u1,
+                                                    double u2) const {
   if (lights_.empty()) return std::nullopt;
   const double count = static_cast<double>(lights_.size());
   const std::size_t index = std::min(lights_.size() - 1, static_cast<std::size_t>(uSelect * count));
   const Light& light = lights_[index];
   const double select = 1 / count;
   LightSample s;
+  s.light = index;
   switch (light.kind) {
     case LightDesc::Kind::Point:
     case LightDesc::Kind::Spot: {
@@ -78,7 +92,7 @@ std::optional<LightSample> LightSet::sample(const glm::dvec3& point, std::size_t
       if (!(d2 > 0)) return std::nullopt;
       s.distance = std::sqrt(d2);
       s.direction = toLight / s.distance;
-      s.value = light.emission[channel] * spotFalloff(light, -s.direction) / d2;
+      s.geometry = spotFalloff(light, -s.direction) / d2;
       s.pdf = select;
       s.isDelta = true;
       break;
@@ -92,7 +106,6 @@ std::optional<LightSample> LightSet::sample(const glm::dvec3& point, std::size_t
       s.direction = toLight / s.distance;
       const double cosLight = -glm::dot(a.normal, s.direction);
       if (!(cosLight > 0)) return std::nullopt;  // the back side does not emit
-      s.value = light.emission[channel];
       s.pdf = select * a.pdfArea * d2 / cosLight;
       s.shape = static_cast<int>(light.shape);
       s.convexShape = convexShape_[light.shape];
@@ -102,12 +115,12 @@ std::optional<LightSample> LightSet::sample(const glm::dvec3& point, std::size_t
       const double z = 1 - 2 * u0, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * kPi * u1;
       s.direction = {r * std::cos(phi), r * std::sin(phi), z};
       s.distance = std::numeric_limits<double>::infinity();
-      s.value = light.emission[channel];
       s.pdf = select / (4 * kPi);
       break;
     }
   }
-  if (!(s.value > 0)) return std::nullopt;
+  if (!(s.geometry > 0)) return std::nullopt;
+  s.value = s.geometry;
   return s;
 }
 

@@ -39,6 +39,8 @@ struct LightSample {
   /// that nothing of it can hide the sampled point (a mesh may shadow itself).
   int shape = -1;
   bool convexShape = false;
+  std::size_t light = 0;   ///< which light was sampled
+  double geometry = 1;     ///< the channel-free factor of value: falloff/d² (delta lights), else 1
 };
 
 class LightSet {
@@ -54,6 +56,14 @@ class LightSet {
   /// One light sample for a shading point; nullopt when the chosen light sends nothing there.
   std::optional<LightSample> sample(const glm::dvec3& point, std::size_t channel, double uSelect, double u0,
                                     double u1, double u2) const;
+
+  /// The same sample without a channel (the light's choice and point do not depend on it):
+  /// value = geometry; emission(sample, c) gives the value at channel c. nullopt when the chosen
+  /// light sends nothing there at any channel.
+  std::optional<LightSample> sampleGeometry(const glm::dvec3& point, double uSelect, double u0, double u1,
+                                            double u2) const;
+  /// value of `sample` at channel `channel`.
+  double emission(const LightSample& sample, std::size_t channel) const;
 
   bool hasEnvironment() const { return environment_ >= 0; }
   double environmentRadiance(std::size_t channel) const;

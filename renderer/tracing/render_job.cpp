@@ -1,7 +1,9 @@
 #include "renderer/tracing/render_job.h"
 
 
+#include <algorithm>
 #include <chrono>
+#include <sstream>
 #include <ostream>
 #include <stdexcept>
 
@@ -20,7 +22,25 @@ SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings) {
   if (settings.seed) scene.integrator.seed = *settings.seed;
   if (settings.skinMode) scene.integrator.skinMode = *settings.skinMode;
   if (settings.effectTolerance) scene.integrator.effectTolerance = *settings.effectTolerance;
+  if (settings.estimator) scene.integrator.estimator = *settings.estimator;
+  if (settings.noiseTarget) scene.integrator.noiseTarget = *settings.noiseTarget;
   return scene;
+}
+
+std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDesc& scene, const RenderResult& result) {
+  std::vector<std::pair<std::string, std::string>> attributes = {
+      {"hylios:seed", std::to_string(scene.integrator.seed)},
+      {"hylios:estimator", skin::estimatorName(scene.integrator.estimator)}};
+  if (scene.integrator.noiseTarget) {
+    std::ostringstream target;
+    target.precision(17);
+    target << *scene.integrator.noiseTarget;
+    attributes.push_back({"hylios:noiseTarget", target.str()});
+    std::string noise = formatNoise(result.stats.noise);
+    std::replace(noise.begin(), noise.end(), '\n', ';');
+    attributes.push_back({"hylios:noise", noise});
+  }
+  return attributes;
 }
 
 RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings, std::ostream* log) {
@@ -45,6 +65,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   if (settings.explain && log) *log << integrator.effectPlanReport();
   if (settings.resumeFrom) {
     const RenderCheckpoint& saved = *settings.resumeFrom;
+    result.film->setWholeBandSamples(integrator.estimator() == skin::Estimator::Spectral);
     result.film->restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts, saved.samplesPerPixelDone);
     result.samplesPerPixelAtStart = saved.samplesPerPixelDone;
     if (log) *log << "continuing from " << saved.samplesPerPixelDone << " of " << scene.film.samplesPerPixel << " spp\n";
@@ -54,6 +75,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   options.progress = settings.progress;
   options.label = scene.file.filename().string();
   options.stopRequested = settings.stopRequested;
+  options.noiseTarget = scene.integrator.noiseTarget;
   // A line after the first pass, then at most one every 10 s (the progress bar shows the rest).
   auto lastReport = Clock::time_point{};
   options.onPassDone = [&](int samplesDone, double) {
@@ -62,7 +84,8 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
     *log << "  pass done: " << samplesDone << "/" << scene.film.samplesPerPixel << " spp" << std::endl;
   };
   result.stats = integrator.render(*result.film, options);
-  result.stopped = result.film->samplesPerPixelDone() < scene.film.samplesPerPixel;
+  result.stopped =
+      result.film->samplesPerPixelDone() < scene.film.samplesPerPixel && !result.stats.noiseTargetReached;
   const auto done = Clock::now();
   result.prepareSeconds = std::chrono::duration<double>(prepared - start).count();
   result.renderSeconds = std::chrono::duration<double>(done - prepared).count();
@@ -77,6 +100,10 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
          << ", subsurface " << s.skinSubsurfaceExits << ", event limit " << s.skinEventLimited
          << "); exit-projection fallbacks " << s.exitFallbacks << "; continuations below the surface "
          << s.belowSurface << "\n";
+    if (scene.integrator.noiseTarget)
+      *log << "  estimated noise (median per-pixel relative, over pixels that see an object) after "
+           << result.film->samplesPerPixelDone() << " spp, target " << *scene.integrator.noiseTarget
+           << (s.noiseTargetReached ? " reached" : " not reached (spp cap)") << ":\n" << formatNoise(s.noise);
   }
   return result;
 }

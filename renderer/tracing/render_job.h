@@ -10,6 +10,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "renderer/image/film.h"
 #include "renderer/tracing/integrator.h"
@@ -27,6 +29,8 @@ struct RenderSettings {
   std::optional<std::string> skinMode;     ///< "walk" or "table" (the scene's when unset)
   std::optional<double> effectTolerance;   ///< ε of the effect planner (the scene's when unset)
   bool explain = false;                    ///< print the effect plans before rendering
+  std::optional<skin::Estimator> estimator;  ///< the scene's when unset
+  std::optional<double> noiseTarget;       ///< the scene's when unset (renderer/image/render_noise.h)
   /// Interruptible renders (render --resume): asked between sample passes, true stops the render.
   std::function<bool()> stopRequested;
   /// A checkpoint's state to continue (readMatchingCheckpoint has checked it against the scene).
@@ -44,6 +48,10 @@ struct RenderResult {
 
 /// The scene with the settings applied (spp, resolution, seed).
 SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings);
+
+/// The EXR attributes of a finished render: hylios:seed, hylios:estimator and, with a noise
+/// target, hylios:noiseTarget and hylios:noise (each group's estimated median relative noise).
+std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDesc& scene, const RenderResult& result);
 
 /// Renders `scene` (after applyRenderSettings); writes a short report to `log` (may be null).
 RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings, std::ostream* log);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 
 #include "skin/sampling/surface_normal_sampling.h"
 #include "skin/core/vector3.h"
@@ -62,7 +63,7 @@ skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesys
 SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex,
                            double unitCm, const std::vector<double>& channelWavelengths,
                            const skin::SpectralDatabase& spectra, const std::string& skinMode,
-                           double effectTolerance)
+                           double effectTolerance, const std::vector<std::vector<std::size_t>>& bundles)
     : materialIndex_(materialIndex), unitCm_(unitCm), aspectRatio_(specimen.surfaceFoldAspectRatio),
       freckles_(desc.skin.freckles, desc.where) {
   if (!(unitCm > 0) || !std::isfinite(unitCm)) throw SceneError(desc.where, "unit_cm must be a positive number");
@@ -80,7 +81,7 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
   const bool tableMode = skinMode == "table";
   walks_ = std::make_unique<SkinWalkCache>(specimen, lo, hi, channelWavelengths, spectra, desc.where,
                                            tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
-                                           effectTolerance);
+                                           effectTolerance, tableMode ? std::vector<std::vector<std::size_t>>{} : bundles);
   if (tableMode)
     tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(), SkinTableCache::renderSettings());
   for (int i = 0; i < kLobeTableSize; ++i)
@@ -120,19 +121,42 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
                                   skin::Rng& rng) const {
   // Normals facing the arriving ray (a back-face hit is treated as skin seen from outside).
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
-  const glm::dvec3 &ng = normals.geometric, &ns = normals.shading;
-  const skin::Frame frame(toSkin(-ns));         // z into the skin
+  const skin::Frame frame(toSkin(-normals.shading));  // z into the skin
   const skin::Vec3 incident = frame.toLocal(toSkin(direction));
-  const double multiplier = melaninMultiplier(hit);
-  const int level = walks_->level(multiplier, rng.uniform());
+  const int level = walks_->level(melaninMultiplier(hit), rng.uniform());
   const skin::SkinPath path = tables_ ? tables_->table(channel, level).sample(incident, rng)
                                       : walks_->walk(channel, level).trace(incident, rng);
+  return exitOf(hit, direction, path.end, path.exitDirection, path.exitOffsetXCm, path.exitOffsetYCm, geometry,
+                materialOfShape);
+}
 
+SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t bundle,
+                                          const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
+                                          skin::Rng& rng, double* weights) const {
+  if (tables_) throw std::logic_error("SkinMaterial::scatterSpectral: table mode has no spectral walks");
+  const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
+  const skin::Frame frame(toSkin(-normals.shading));
+  const skin::Vec3 incident = frame.toLocal(toSkin(direction));
+  const int level = walks_->level(melaninMultiplier(hit), rng.uniform());
+  const skin::SpectralWalk& walk = walks_->spectralWalk(bundle, level);
+  thread_local skin::SpectralPath path;  // reused: the walk keeps its per-λ arrays there
+  walk.trace(incident, rng, path);
+  for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
+  return exitOf(hit, direction, path.end, path.exitDirection, path.exitOffsetXCm, path.exitOffsetYCm, geometry,
+                materialOfShape);
+}
+
+SkinScatter SkinMaterial::exitOf(const SurfaceHit& hit, const glm::dvec3& direction, skin::PathEnd end,
+                                 const skin::Vec3& exitDirection, double offsetXCm, double offsetYCm,
+                                 const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape) const {
+  const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
+  const glm::dvec3 &ng = normals.geometric, &ns = normals.shading;
+  const skin::Frame frame(toSkin(-ns));
   SkinScatter out;
   out.point = hit.position;
   out.shadingNormal = ns;
   out.geometricNormal = ng;
-  switch (path.end) {
+  switch (end) {
     case skin::PathEnd::Absorbed:
     case skin::PathEnd::Transmitted:
       out.kind = SkinScatter::Kind::Absorbed;
@@ -142,13 +166,13 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
       return out;
     case skin::PathEnd::SurfaceReflection:
       out.kind = SkinScatter::Kind::SurfaceReflection;
-      out.direction = glm::normalize(toGlm(frame.toWorld(path.exitDirection)));
+      out.direction = glm::normalize(toGlm(frame.toWorld(exitDirection)));
       return out;
     case skin::PathEnd::SubsurfaceReflection:
       break;
   }
   out.kind = SkinScatter::Kind::SubsurfaceReflection;
-  const glm::dvec3 offset = (toGlm(frame.t) * path.exitOffsetXCm + toGlm(frame.b) * path.exitOffsetYCm) / unitCm_;
+  const glm::dvec3 offset = (toGlm(frame.t) * offsetXCm + toGlm(frame.b) * offsetYCm) / unitCm_;
   const double offsetLength = glm::length(offset);
   if (!(offsetLength > 0)) return out;
   const glm::dvec3 planePoint = hit.position + offset;

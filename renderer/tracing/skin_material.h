@@ -9,6 +9,13 @@
 // | melanin_map, min, max           | UV texture t → melanin multiplier min + (max − min)·t        |
 // | freckles                        | procedural spots (renderer/tracing/freckle_field.h), multiplier      |
 //
+// SPECTRAL ESTIMATOR (the default, scene key integrator.estimator = "spectral"): the camera path
+// carries every channel of its band, and the walk is the spectral walk (skin/spectral_walk.h) of
+// the band's channels at the hit's melanin level: one path with a weight per channel, so that no
+// absorbed/escaped outcome is drawn per camera path — each channel's exit weight multiplies its
+// throughput (expected value), and a surface or subsurface exit continues as below. Everything
+// else of this comment holds per channel with that weight.
+//
 // ESTIMATOR. Reciprocity lets the walk start on the camera side: the camera ray, direction ω_c,
 // hits skin at x. Local frame (skin::Frame): z = −n (into the skin, n the shading normal facing the
 // ray), t and b span the tangent plane; the walk gets ω_c in that frame and runs for the specimen
@@ -78,7 +85,8 @@ class SkinMaterial {
   SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex, double unitCm,
                const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
                const std::string& skinMode = "walk",
-               double effectTolerance = skin::kDefaultEffectTolerance);  ///< ε, skin/effect_plan.h
+               double effectTolerance = skin::kDefaultEffectTolerance,  ///< ε, skin/effect_plan.h
+               const std::vector<std::vector<std::size_t>>& bundles = {});
 
   /// Melanin multiplier at a hit: melanin map (by uv) × freckles (by position in cm).
   double melaninMultiplier(const SurfaceHit& hit) const;
@@ -88,6 +96,14 @@ class SkinMaterial {
   SkinScatter scatter(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t channel,
                       const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
                       skin::Rng& rng) const;
+
+  /// The spectral estimator: the walk for bundle `bundle` (a band's channels, given to the
+  /// constructor) at `hit`; weights[i] receives the exit weight of the bundle's i-th channel (the
+  /// factor on the path throughput; all 0 when the walk was ended by Russian roulette, which is
+  /// reported as Absorbed). Walk mode only (throws std::logic_error in table mode).
+  SkinScatter scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t bundle,
+                              const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
+                              skin::Rng& rng, double* weights) const;
 
   /// The model lobe g (per sr) of a surface reflection into `outgoing` for a ray travelling along
   /// `incident` onto a surface with outward normal `normal` (all unit, world).
@@ -102,6 +118,11 @@ class SkinMaterial {
   double surfaceAspectRatio() const { return aspectRatio_; }
 
  private:
+  /// The walk's exit in world terms: the entry frame, the path's end, offset and direction.
+  SkinScatter exitOf(const SurfaceHit& hit, const glm::dvec3& direction, skin::PathEnd end,
+                     const skin::Vec3& exitDirection, double offsetXCm, double offsetYCm,
+                     const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape) const;
+
   std::size_t materialIndex_;
   double unitCm_;
   double aspectRatio_;

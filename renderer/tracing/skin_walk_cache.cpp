@@ -36,7 +36,8 @@ skin::Specimen scaleMelanin(const skin::Specimen& specimen, double multiplier) {
 
 SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
                              const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
-                             const SourceLocation& where, int levels, double effectTolerance)
+                             const SourceLocation& where, int levels, double effectTolerance,
+                             const std::vector<std::vector<std::size_t>>& bundles)
     : lo_(std::min(minMultiplier, maxMultiplier)), hi_(std::max(minMultiplier, maxMultiplier)),
       levels_(hi_ > lo_ ? levels : 1), channels_(channelWavelengths.size()), effectTolerance_(effectTolerance) {
   if (!(effectTolerance >= 0 && effectTolerance <= 1))
@@ -64,7 +65,7 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
   walks_.resize(static_cast<std::size_t>(levels_) * distinctWavelengths_);
   std::mutex errorMutex;
   std::string error;
-  if (effectTolerance > 0) {
+  if (effectTolerance > 0 && bundles.empty()) {
     plans_.resize(distinctWavelengths_);
     tbb::parallel_for(std::size_t{0}, distinctWavelengths_, [&](std::size_t c) {
       try {
@@ -90,6 +91,28 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
     }
   });
   if (!error.empty()) throw SceneError(where, "skin specimen '" + specimen.name + "': " + error);
+  bundleCount_ = bundles.size();
+  spectralWalks_.resize(static_cast<std::size_t>(levels_) * bundleCount_);
+  skin::WalkOptions spectral;
+  spectral.tabulatedMelanosomes = true;  // internal melanosome paths drawn from a 2¹⁸-path table
+  spectral.layerAbsorption = false;      // a render needs the exit weights only
+  tbb::parallel_for(std::size_t{0}, spectralWalks_.size(), [&](std::size_t i) {
+    const std::size_t k = i / bundleCount_, b = i % bundleCount_;
+    try {
+      std::vector<skin::SkinOptics> optics;
+      for (std::size_t channel : bundles[b])
+        optics.push_back(skin::computeSkinOptics(specimens[k], spectra, channelWavelengths.at(channel)));
+      spectralWalks_[i].emplace(optics, spectral);
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(errorMutex);
+      if (error.empty()) error = e.what();
+    }
+  });
+  if (!error.empty()) throw SceneError(where, "skin specimen '" + specimen.name + "': " + error);
+}
+
+const skin::SpectralWalk& SkinWalkCache::spectralWalk(std::size_t bundle, int level) const {
+  return *spectralWalks_.at(static_cast<std::size_t>(level) * bundleCount_ + bundle);
 }
 
 double SkinWalkCache::levelMultiplier(int level) const {

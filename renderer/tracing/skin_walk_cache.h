@@ -20,7 +20,7 @@
 // those four pilots, fits in ε. Melanin-borne processes have μ ∝ multiplier (largest at the top
 // level), the others the longest paths at the lowest melanin; camera rays meet skin at all angles,
 // and 0° (deepest paths) and 60° (longest paths in the top layers) bracket the usual ones. ε = 0:
-// no pilot, the full model.
+// no pilot, the full model. Spectral walks (bundles) always run the full model.
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -29,6 +29,7 @@
 #include "renderer/scene/scene.h"
 #include "skin/effect_plan.h"
 #include "skin/skin_walk.h"
+#include "skin/spectral_walk.h"
 #include "skin/spectral_database.h"
 #include "skin/specimen.h"
 
@@ -45,10 +46,13 @@ class SkinWalkCache {
   /// multiplied specimen is not valid (e.g. a melanin fraction above 1).
   /// `levels` (≥ 2) replaces kMelaninLevels when the multiplier range is not a single value.
   /// `effectTolerance` is the planner's ε in [0, 1] (0: every process simulated).
+  /// `bundles` (the spectral estimator, skin/spectral_walk.h): channel lists that each get one
+  /// spectral walk per level, built from the full model (no effect plan is made then).
   SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
                 const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
                 const SourceLocation& where, int levels = kMelaninLevels,
-                double effectTolerance = skin::kDefaultEffectTolerance);
+                double effectTolerance = skin::kDefaultEffectTolerance,
+                const std::vector<std::vector<std::size_t>>& bundles = {});
 
   /// Pilot rays per melanin end level and incidence of the effect planner.
   static constexpr std::uint64_t kRenderPilotRays = 500;
@@ -63,6 +67,9 @@ class SkinWalkCache {
   /// The level for multiplier m with stochastic rounding by uniform u in [0, 1).
   int level(double multiplier, double u) const;
   const skin::SkinWalk& walk(std::size_t channel, int level) const;
+  /// The spectral walk of bundle `bundle` (its channels in the order given) at `level`.
+  const skin::SpectralWalk& spectralWalk(std::size_t bundle, int level) const;
+  std::size_t bundles() const { return bundleCount_; }
   const skin::SkinWalk& walk(std::size_t channel, double multiplier, double u) const {
     return walk(channel, level(multiplier, u));
   }
@@ -75,6 +82,8 @@ class SkinWalkCache {
   std::vector<std::size_t> distinctOfChannel_;        ///< channel → distinct wavelength index
   std::size_t distinctWavelengths_ = 0;
   std::vector<skin::EffectPlan> plans_;               ///< per distinct wavelength; empty when ε = 0
+  std::vector<std::optional<skin::SpectralWalk>> spectralWalks_;  ///< [level * bundles + bundle]
+  std::size_t bundleCount_ = 0;
   double effectTolerance_ = 0;
 };
 

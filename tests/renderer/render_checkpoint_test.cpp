@@ -57,6 +57,7 @@ const Integrator& integrator() {
 Film render(int threads, int samplesPerPass, int stopAfterPasses = -1, Film* resumeFrom = nullptr) {
   const hylios::ThreadLimit limit(threads);
   Film film(testScene().film);
+  film.setWholeBandSamples(integrator().estimator() == hylios::skin::Estimator::Spectral);
   if (resumeFrom) film.restoreState(resumeFrom->sums(), resumeFrom->counts(), resumeFrom->oddSums(), resumeFrom->oddCounts(),
                                    resumeFrom->samplesPerPixelDone());
   RenderOptions options;
@@ -129,8 +130,10 @@ TEST(RenderPasses, StopBetweenPassesKeepsWholePasses) {
   EXPECT_EQ(stopped.samplesPerPixelDone(), 8);
   for (int y = 0; y < stopped.height(); ++y)
     for (int x = 0; x < stopped.width(); ++x) {
-      std::uint32_t samples = 0;
-      for (std::size_t c = 0; c < stopped.channels().size(); ++c) samples += stopped.sampleCount(x, y, c);
+      std::uint32_t samples = 0;  // each sample fills one channel, or a whole band (spectral)
+      for (std::size_t b = 0; b < stopped.bandCount(); ++b)
+        for (std::size_t c : stopped.bandChannels(b))
+          if (!stopped.wholeBandSamples() || c == stopped.bandChannels(b).front()) samples += stopped.sampleCount(x, y, c);
       ASSERT_EQ(samples, 8u) << "pixel (" << x << ", " << y << ")";
     }
   const Film none = render(1, 4, 0);
@@ -165,6 +168,7 @@ TEST(RenderCheckpoint, StoppedRenderContinuedFromItsCheckpointEqualsUninterrupte
     const RenderCheckpoint saved = readMatchingCheckpoint(state, identity());
     EXPECT_EQ(saved.samplesPerPixelDone, 6);
     Film restored(testScene().film);
+    restored.setWholeBandSamples(reference().wholeBandSamples());
     restored.restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts, saved.samplesPerPixelDone);
     const Film continued = render(3 - threads, 0, -1, &restored);
     expectSameFilm(continued, reference());
@@ -247,6 +251,7 @@ TEST(RenderCheckpoint, IdentityHashesTheSceneFileBytes) {
 TEST(FilmRestoreState, RejectsStateThatDoesNotFit) {
   const Film& whole = reference();
   Film film(testScene().film);
+  film.setWholeBandSamples(whole.wholeBandSamples());
   std::vector<std::uint32_t> counts = whole.counts();
   EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp - 1), std::invalid_argument);  // counts add up to 12
   counts[5] += 1;

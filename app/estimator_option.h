@@ -1,0 +1,23 @@
+// The --estimator option of the commands that walk skin (spectrum, brdf, forward-profile,
+// radial-profile), and the run it selects (skin/estimator.h).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "skin/estimator.h"
+#include "skin/skin_simulation.h"
+
+namespace hylios {
+
+/// Adds --estimator spectral|per-wavelength (default spectral) writing into `estimator`.
+void addEstimatorOption(CLI::App& command, std::string& estimator);
+
+/// One tally per optics: the analog walk per wavelength (per-wavelength), or the spectral walk
+/// with internal melanosome paths drawn from its table (spectral; skin/spectral_simulation.h).
+std::vector<skin::SkinTally> simulateWithEstimator(const std::string& estimator,
+                                                   const std::vector<skin::SkinOptics>& optics,
+                                                   const skin::WalkRunOptions& run);
+
+}  // namespace hylios
