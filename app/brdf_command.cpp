@@ -14,6 +14,7 @@
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/estimator_option.h"
+#include "app/option_checks.h"
 #include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
 #include "app/progress_bar.h"
@@ -120,6 +121,7 @@ void plotInPlane(const BrdfArguments& args, const std::string& specimenName, con
 void runBrdf(const BrdfArguments& args) {
   if (args.visible == !args.wavelengths.empty())
     throw std::invalid_argument("hylios brdf: give exactly one of --wavelengths LIST and --visible");
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}}, {inputFile("--specimen", args.specimen.specimen)});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -156,7 +158,7 @@ void registerBrdfCommand(CLI::App& app) {
       "brdf", "Angular distribution of reflected light: surface/subsurface/total per sr and BRDF (CSV, optional in-plane plot)");
   addSpecimenOptions(*command, args->specimen);
   command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
-      ->check(CLI::Range(0.0, 89.999))
+      ->check(finiteRange(0.0, 89.999))
       ->capture_default_str();
   auto* wavelengths = command->add_option("--wavelengths", args->wavelengths,
                                           "start:stop:step or a comma list, nm; several are averaged with equal weight");
@@ -164,9 +166,10 @@ void registerBrdfCommand(CLI::App& app) {
       ->excludes(wavelengths);
   addEstimatorOption(*command, args->estimator);
   command->add_option("--rays", args->rays, "Rays per wavelength")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
+      ->check(unsignedRange(1, std::uint64_t{1} << 40))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed (same seed, same output at any thread count)");
+  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+      ->check(seedRange());
   command->add_option("--polar-bins", args->polarBins, "Bins of the reflection angle over [0°, 90°]")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1800}))
       ->capture_default_str();

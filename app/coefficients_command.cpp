@@ -20,6 +20,7 @@
 
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
 #include "app/wavelength_list.h"
@@ -76,7 +77,7 @@ std::string csvRows(const skin::SkinOptics& optics) {
   const double nm = optics.wavelengthNm;
   for (skin::Layer l : skin::kAllLayers) {
     const skin::LayerOptics& o = optics[l];
-    rows += fmt::format("{:.6g},{},{},{},{},{}", nm, skin::layerName(l),
+    rows += fmt::format("{},{},{},{},{},{}", formatWavelength(nm), skin::layerName(l),
                         checked(o.muATotal_perCm, nm, l, "mu_a"),
                         checked(o.muRayleigh_perCm, nm, l, "mu_s_rayleigh"),
                         checked(o.melanosome.mu_perCm, nm, l, "mu_melanosome"),
@@ -145,6 +146,8 @@ void writePlot(const std::filesystem::path& png, const skin::Specimen& specimen,
 }
 
 void runCoefficients(const CoefficientsOptions& options) {
+  checkOutputs({{"--out", options.csvPath}, {"--plot", options.plotPath, true}},
+               {inputFile("--specimen", options.specimen)});
   const std::vector<double> wavelengths = parseWavelengthList(options.wavelengths);
   skin::Specimen specimen = skin::loadSpecimen(options.specimen, specimenDir());
   for (const std::string& text : options.overrides)

@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "renderer/image/film_output.h"
 #include "app/render_options.h"
 #include "renderer/scene/scene_file.h"
+#include "renderer/tracing/render_memory.h"
 
 namespace hylios {
 namespace {
@@ -21,12 +25,36 @@ struct FigureArguments {
   RenderCommandOptions options;
 };
 
+/// The output folder must be a folder we can write in (made if missing); checked before any work.
+void checkOutputFolder(const std::string& out) {
+  if (out.empty()) throw std::invalid_argument("--out '': empty path; give an output folder");
+  std::error_code error;
+  if (fs::exists(out, error) && !fs::is_directory(out, error))
+    throw std::invalid_argument("--out '" + out + "': exists and is not a folder");
+  fs::create_directories(out, error);
+  if (error) throw std::invalid_argument("--out '" + out + "': cannot create the folder: " + error.message());
+  checkWritableOutput({"--out", (fs::path(out) / "contact_sheet.png").string()});
+}
+
 void runFigure(const FigureArguments& args) {
   const RenderSettings settings = renderSettingsFromOptions(args.options);
+  // Two scenes with one stem would write one DIR/<stem>.exr (the second over the first).
+  std::map<std::string, std::string> stems;
+  for (const auto& file : args.scenes) {
+    const std::string stem = fs::path(file).stem().string();
+    if (const auto [it, inserted] = stems.emplace(stem, file); !inserted)
+      throw std::invalid_argument("scenes '" + it->second + "' and '" + file + "' would both be written to '" +
+                                  (fs::path(args.out) / (stem + ".exr")).string() + "'; rename one of them");
+  }
   // Parse every scene first, so a typo in the last one fails before hours of rendering.
   std::vector<SceneDesc> scenes;
   for (const auto& file : args.scenes) scenes.push_back(applyRenderSettings(loadSceneFile(file), settings));
-  fs::create_directories(args.out);
+  checkOutputFolder(args.out);
+  std::vector<NamedPath> inputs, outputs;
+  for (const auto& file : args.scenes) inputs.push_back({"scene", file});
+  for (const auto& [stem, file] : stems) outputs.push_back({"--out", (fs::path(args.out) / (stem + ".exr")).string()});
+  checkOutputs(outputs, inputs);
+  for (const SceneDesc& scene : scenes) checkRenderMemory(scene);
   std::vector<fs::path> panels;
   std::vector<std::string> labels;
   int columns = 1;

@@ -16,6 +16,7 @@
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/estimator_option.h"
+#include "app/option_checks.h"
 #include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
 #include "app/specimen_options.h"
@@ -46,8 +47,8 @@ double belowRefractiveIndex(const std::string& text, const skin::SkinOptics& opt
   if (text == "matched") return optics[skin::Layer::StratumBasale].refractiveIndex;
   char* end = nullptr;
   const double n = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(n) || n < 1.0)
-    throw std::invalid_argument("--below-index '" + text + "': expected 'matched' or a refractive index ≥ 1");
+  if (text.empty() || *end != '\0' || !std::isfinite(n) || n < 1.0 || n > 10.0)
+    throw std::invalid_argument("--below-index '" + text + "': expected 'matched' or a refractive index in [1, 10]");
   return n;
 }
 
@@ -90,6 +91,7 @@ void plotProfile(const ForwardProfileArguments& args, const std::string& specime
 }
 
 void runForwardProfile(const ForwardProfileArguments& args) {
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}}, {inputFile("--specimen", args.specimen.specimen)});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -119,12 +121,15 @@ void registerForwardProfileCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "forward-profile", "Angular profile of light transmitted through the epidermis at normal incidence (paper Fig. 8)");
   addSpecimenOptions(*command, args->specimen);
-  command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")->capture_default_str();
+  command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
+      ->check(finiteRange(0, 1e6))
+      ->capture_default_str();
   addEstimatorOption(*command, args->estimator);
   command->add_option("--rays", args->rays, "Rays")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
+      ->check(unsignedRange(1, std::uint64_t{1} << 40))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed (same seed, same output at any thread count)");
+  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+      ->check(seedRange());
   command->add_option("--polar-bins", args->polarBins, "Bins of the angle from the inward normal over [0°, 90°]")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1800}))
       ->capture_default_str();

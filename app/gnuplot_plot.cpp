@@ -101,8 +101,13 @@ void plotPanels(const std::filesystem::path& png, const std::string& title,
     if (status != 0 || !std::filesystem::exists(tmp)) {
       std::ifstream errorStream(errors);
       std::string message((std::istreambuf_iterator<char>(errorStream)), std::istreambuf_iterator<char>());
-      throw std::runtime_error("gnuplot failed writing '" + png.string() +
-                               "' (is gnuplot-nox installed?): " + message);
+      // The shell exits 127 when it cannot find the program; anything else is gnuplot's own
+      // failure (a folder it cannot write in, a bad script), reported with its message.
+      if (status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 127)
+        throw std::runtime_error("cannot plot '" + png.string() +
+                                 "': gnuplot is not installed or not on PATH (Debian: apt-get install gnuplot-nox)");
+      throw std::runtime_error("gnuplot failed writing '" + png.string() + "'" +
+                               (message.empty() ? std::string() : ": " + message));
     }
   });
 }

@@ -6,6 +6,7 @@
 
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "renderer/image/image_comparison.h"
 
 namespace hylios {
@@ -30,6 +31,7 @@ void printNoise(const ImageDiffArguments& args) {
 }
 
 void runImageDiff(const ImageDiffArguments& args) {
+  checkOutputs({{"--csv", args.csv, true}}, {{"test", args.test}, {"reference", args.reference}});
   if (args.noise) return printNoise(args);
   const ImageComparison comparison = compareImageFiles(args.test, args.reference, args.blockSize);
   std::cout << "test '" << args.test << "' against reference '" << args.reference << "'\n"

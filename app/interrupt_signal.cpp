@@ -5,6 +5,9 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <unistd.h>
+
+#include "renderer/tracing/exit_table_cache.h"
 
 namespace hylios {
 namespace {
@@ -16,9 +19,26 @@ static_assert(std::atomic<int>::is_always_lock_free, "the signal flag must be lo
 std::atomic<bool> scopeAlive{false};
 
 /// Keeps the first signal (a later one of the other kind is not recorded over it).
+/// write(2) of a literal, ignoring the result (async-signal-safe).
+template <std::size_t N>
+void say(const char (&text)[N]) {
+  const ssize_t ignored = ::write(STDERR_FILENO, text, N - 1);
+  (void)ignored;
+}
+
+/// Keeps the first signal, and says at once what happens now: the work stops at the next safe
+/// point, after the exit table being built if there is one (a build is not cut short: the table
+/// is cached for the next run). A second signal of the same kind stops at once (SA_RESETHAND).
 extern "C" void recordInterruptSignal(int signal) {
   int none = 0;
-  pendingSignal.compare_exchange_strong(none, signal, std::memory_order_relaxed);
+  if (!pendingSignal.compare_exchange_strong(none, signal, std::memory_order_relaxed)) return;
+  if (signal == SIGINT) say("\nhylios: SIGINT received");
+  else say("\nhylios: SIGTERM received");
+  if (ExitTableCache::buildsInProgress() > 0)
+    say("; finishing the exit table being built (it is cached for the next run), then stopping; "
+        "send it again to stop at once\n");
+  else
+    say("; stopping after the current sample pass; send it again to stop at once\n");
 }
 
 void install(int signal, struct sigaction* previous) {

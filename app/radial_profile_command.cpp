@@ -9,6 +9,7 @@
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/estimator_option.h"
+#include "app/option_checks.h"
 #include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
 #include "app/specimen_options.h"
@@ -18,6 +19,10 @@
 
 namespace hylios {
 namespace {
+
+/// --max-radius-cm: below 1 µm the annuli's areas underflow; above 1 m no light comes back.
+constexpr double kMinMaxRadiusCm = 1e-4;
+constexpr double kMaxMaxRadiusCm = 100;
 
 struct RadialProfileArguments {
   SpecimenOptions specimen;
@@ -67,6 +72,7 @@ void plotProfile(const RadialProfileArguments& args, const std::string& specimen
 }
 
 void runRadialProfile(const RadialProfileArguments& args) {
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}}, {inputFile("--specimen", args.specimen.specimen)});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -93,17 +99,21 @@ void registerRadialProfileCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "radial-profile", "Subsurface reflectance per unit area vs distance from the entry point, R(r) in cm⁻² (BSSRDF)");
   addSpecimenOptions(*command, args->specimen);
-  command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")->capture_default_str();
+  command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
+      ->check(finiteRange(0, 1e6))
+      ->capture_default_str();
   command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
-      ->check(CLI::Range(0.0, 89.999))
+      ->check(finiteRange(0.0, 89.999))
       ->capture_default_str();
   addEstimatorOption(*command, args->estimator);
   command->add_option("--rays", args->rays, "Rays")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
+      ->check(unsignedRange(1, std::uint64_t{1} << 40))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed (same seed, same output at any thread count)");
-  command->add_option("--max-radius-cm", args->maxRadiusCm, "Outer radius of the last annulus, cm")
-      ->check(CLI::PositiveNumber)
+  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+      ->check(seedRange());
+  command->add_option("--max-radius-cm", args->maxRadiusCm,
+                      "Outer radius of the last annulus, cm, in [1e-4, 100] (1 µm to 1 m)")
+      ->check(finiteRange(kMinMaxRadiusCm, kMaxMaxRadiusCm))
       ->capture_default_str();
   command->add_option("--bins", args->bins, "Annuli of equal width over [0, max radius)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))

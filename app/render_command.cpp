@@ -8,14 +8,17 @@
 #include <iostream>
 #include <memory>
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "renderer/image/film_output.h"
 #include "app/interrupt_signal.h"
 #include "renderer/image/render_checkpoint.h"
 #include "app/render_options.h"
 #include "renderer/scene/scene_file.h"
+#include "renderer/tracing/render_memory.h"
 
 namespace hylios {
 namespace {
@@ -52,14 +55,36 @@ std::string imageAffectingOptions(const CLI::App& command) {
   return joined;
 }
 
+/// The files a scene reads: itself, its meshes, melanin maps and specimen files.
+std::vector<NamedPath> sceneInputs(const SceneDesc& scene) {
+  std::vector<NamedPath> inputs = {{"scene", scene.file.string()}};
+  for (const ShapeDesc& shape : scene.shapes)
+    if (!shape.meshPath.empty()) inputs.push_back({"mesh", shape.meshPath.string()});
+  for (const MaterialDesc& material : scene.materials) {
+    if (material.kind != MaterialDesc::Kind::Skin) continue;
+    if (!material.skin.melaninMap.empty()) inputs.push_back({"melanin map", material.skin.melaninMap.string()});
+    inputs.push_back(inputFile("specimen", material.skin.specimen));
+  }
+  return inputs;
+}
+
 void runRender(const RenderArguments& args, const CLI::App& command) {
   RenderSettings settings = renderSettingsFromOptions(args.options);
   if (args.seedGiven) settings.seed = args.seed;
+  // Outputs first: a bad --out fails now, not after the render (issue 13, rows 6 and 7).
+  checkOutputs({{"--out", args.out}}, {{"scene", args.scene}});
   const SceneDesc scene = applyRenderSettings(loadSceneFile(args.scene), settings);
+  checkOutputs({{"--out", args.out}}, sceneInputs(scene));
   const RenderIdentity identity = renderIdentity(scene, imageAffectingOptions(command));
   const std::filesystem::path checkpoint = checkpointPathFor(args.out);
+  std::error_code noCheckpoint;
+  if (!args.resume && std::filesystem::exists(checkpoint, noCheckpoint))
+    throw std::runtime_error("'" + checkpoint.string() + "' holds an interrupted render of '" + args.out +
+                             "'; continue it with the same command and --resume, or delete that file to start "
+                             "afresh (nothing was changed)");
   if (args.resume)
     settings.resumeFrom = std::make_shared<const RenderCheckpoint>(readMatchingCheckpoint(checkpoint, identity));
+  checkRenderMemory(scene);
   const InterruptSignalScope signals;
   settings.stopRequested = [&signals] { return signals.requested(); };
   const RenderResult result = renderScene(scene, settings, &std::cout);
@@ -97,7 +122,8 @@ void registerRenderCommand(CLI::App& app) {
   command->add_option("scene", args->scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
   command->add_option("--out", args->out, "OpenEXR file to write (previews go beside it)")->required();
   addRenderCommandOptions(*command, args->options);
-  auto* seed = command->add_option("--seed", args->seed, "Random seed (default: the scene's)");
+  auto* seed = command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (default: the scene's)")
+                   ->check(seedRange());
   command->add_flag("--resume", args->resume,
                     "Continue the interrupted render whose checkpoint <out>.hylios-state lies beside --out "
                     "(same scene and options)");

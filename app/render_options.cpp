@@ -3,21 +3,32 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "app/option_checks.h"
 #include "app/progress_bar.h"
+#include "renderer/scene/scene_file.h"
 
 namespace hylios {
 
 std::pair<int, int> parseResolution(const std::string& text) {
   const auto x = text.find('x');
-  auto number = [&](const std::string& part) {
-    char* end = nullptr;
-    const long v = std::strtol(part.c_str(), &end, 10);
-    if (part.empty() || *end != '\0' || v <= 0 || v > 65536)
+  auto number = [&](const std::string& part, const char* side) {
+    if (part.empty() || part.find_first_not_of("0123456789") != std::string::npos)
       throw std::invalid_argument("--resolution '" + text + "': expected WxH with positive integers, e.g. 512x512");
+    if (part.size() > 9 || std::stol(part) > kMaxFilmSide)
+      throw std::invalid_argument(fmt::format("--resolution '{}': the {} {} exceeds the limit of {} pixels per side",
+                                              text, side, part, kMaxFilmSide));
+    const long v = std::stol(part);
+    if (v < 1) throw std::invalid_argument(fmt::format("--resolution '{}': the {} must be at least 1", text, side));
     return static_cast<int>(v);
   };
-  if (x == std::string::npos) number("");
-  return {number(text.substr(0, x)), number(text.substr(x + 1))};
+  if (x == std::string::npos) number("", "width");
+  const int w = number(text.substr(0, x), "width"), h = number(text.substr(x + 1), "height");
+  if (static_cast<long long>(w) * h > kMaxFilmPixels)
+    throw std::invalid_argument(fmt::format("--resolution '{}': {} pixels exceeds the limit of {} (64 Mpixel)", text,
+                                            static_cast<long long>(w) * h, kMaxFilmPixels));
+  return {w, h};
 }
 
 void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
@@ -29,7 +40,7 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_option("--epsilon", options.effectTolerance,
                      "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped "
                      "(0 = simulate everything; default: the scene's, else 1e-3)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finiteRange(0.0, 1.0));
   command.add_flag("--explain", options.explain, "Print the effect plan (process, layer, optical depth, kept or skipped)");
   command.add_option("--estimator", options.estimator,
                      "spectral (a path carries every channel of a band; skin runs the spectral walk) or "

@@ -12,6 +12,7 @@
 
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/slab_layer_spec.h"
 #include "skin/layered_slab.h"
 #include "skin/core/thread_limit.h"
@@ -46,6 +47,7 @@ std::string csvFor(const skin::SlabResult& r) {
 }
 
 void runSlab(const SlabOptions& o) {
+  checkOutputs({{"--out", o.out}});
   skin::SlabProblem problem;
   problem.refractiveIndexAbove = o.nAbove;
   problem.refractiveIndexBelow = o.nBelow;
@@ -75,21 +77,29 @@ void registerSlabCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "slab", "Monte Carlo of a layered slab (MCML's problem): Rd, Tt, absorptance per layer");
   sub->add_option("--above", options->nAbove, "refractive index of the ambient above")
+      ->check(finiteRange(1.0, 10.0))
       ->capture_default_str();
   sub->add_option("--below", options->nBelow, "refractive index of the ambient below")
+      ->check(finiteRange(1.0, 10.0))
       ->capture_default_str();
   sub->add_option("--layer", options->layers,
                   "a layer, top first: n=..,mua=..(1/cm),mus=..(1/cm),g=..,d=..(cm or inf); repeat")
       ->required();
-  sub->add_option("--rays", options->rays, "photon packets")->capture_default_str();
+  sub->add_option("--rays", options->rays, "photon packets")
+      ->check(unsignedRange(1, std::uint64_t{1} << 40))
+      ->capture_default_str();
   sub->add_option("--angle", options->angleDeg, "incidence angle from the normal, degrees [0, 90)")
+      ->check(finiteRange(0.0, 89.999))
       ->capture_default_str();
   sub->add_flag("--diffuse", options->diffuse, "diffuse (Lambertian) illumination instead of a beam");
-  sub->add_option("--seed", options->seed, "random seed")->capture_default_str();
+  sub->add_option("--seed", options->seed, "random seed in [0, 2^63-1]")
+      ->check(seedRange())
+      ->capture_default_str();
   sub->add_option("--scheme", options->scheme, "absorption scoring")
       ->check(CLI::IsMember({"analog", "weighted"}))
       ->capture_default_str();
   sub->add_option("--threads", options->threads, "worker threads (0: all cores)")
+      ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   sub->add_option("--out", options->out, "output CSV file")->required();
   sub->callback([options] { runSlab(*options); });

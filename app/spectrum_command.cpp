@@ -10,6 +10,7 @@
 #include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/estimator_option.h"
+#include "app/option_checks.h"
 #include "renderer/scene/data_paths.h"
 #include "renderer/tracing/exit_table_cache.h"
 #include "app/gnuplot_plot.h"
@@ -77,8 +78,7 @@ std::string formatCsv(const std::vector<double>& wavelengths, const std::vector<
   };
   for (std::size_t i = 0; i < wavelengths.size(); ++i) {
     const skin::SkinTally& t = tallies[i];
-    std::snprintf(buffer, sizeof buffer, "%g", wavelengths[i]);
-    csv << buffer;
+    csv << formatWavelength(wavelengths[i]);
     put(t.reflectance().mean);
     put(t.reflectance().standardError);
     put(t.surfaceReflectance().mean);
@@ -127,7 +127,15 @@ skin::SkinTally tableTally(const skin::SkinWalk& walk, const SpectrumArguments& 
   return tally;
 }
 
+/// The file of --measured FILE:COLUMN.
+std::string measuredFile(const std::string& measured) {
+  const auto colon = measured.rfind(':');
+  return colon == std::string::npos ? measured : measured.substr(0, colon);
+}
+
 void runSpectrum(const SpectrumArguments& args) {
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
+               {inputFile("--specimen", args.specimen.specimen), inputFile("--measured", measuredFile(args.measured))});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -183,10 +191,11 @@ void registerSpectrumCommand(CLI::App& app) {
   auto args = std::make_shared<SpectrumArguments>();
   CLI::App* command = app.add_subcommand("spectrum", "Total hemispherical reflectance of a specimen over wavelengths (CSV, optional plot)");
   addSpecimenOptions(*command, args->specimen);
-  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")->check(CLI::Range(0.0, 89.999));
+  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")->check(finiteRange(0.0, 89.999));
   command->add_option("--wavelengths", args->wavelengths, "start:stop:step or a comma list, nm");
-  command->add_option("--rays", args->rays, "Rays per wavelength")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-  command->add_option("--seed", args->seed, "Random seed (same seed, same output at any thread count)");
+  command->add_option("--rays", args->rays, "Rays per wavelength")->check(unsignedRange(1, std::uint64_t{1} << 40));
+  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+      ->check(seedRange());
   command->add_option("--out", args->out, "CSV file to write")->required();
   command->add_option("--plot", args->plot, "PNG plot to write");
   command->add_option("--measured", args->measured, "FILE:COLUMN of a measured curve to compare with (RMS printed)");
@@ -199,7 +208,7 @@ void registerSpectrumCommand(CLI::App& app) {
   command->add_option("--epsilon", args->effectTolerance,
                       "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped, "
                       "bounding the change of R by it (0 = simulate everything; default 1e-3)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finiteRange(0.0, 1.0));
   command->add_flag("--explain", args->explain,
                     "Print each wavelength's effect plan (process, layer, optical depth, kept or skipped; "
                     "one line per wavelength beyond 8)");

@@ -1,5 +1,8 @@
 #include "app/wavelength_list.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -31,6 +34,14 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
+/// Digits after the decimal point of a plain decimal number ("0.0025" -> 4); -1 for one with an
+/// exponent (not snapped).
+int decimals(const std::string& token) {
+  if (token.find_first_of("eE") != std::string::npos) return -1;
+  const auto point = token.find('.');
+  return point == std::string::npos ? 0 : static_cast<int>(token.size() - point - 1);
+}
+
 std::vector<double> parseRange(const std::string& text) {
   const auto parts = split(text, ':');
   if (parts.size() != 3) fail(text, "a range is start:stop:step");
@@ -40,9 +51,14 @@ std::vector<double> parseRange(const std::string& text) {
   if (stop < start) fail(text, "stop is below start");
   const double count = std::floor((stop - start) / step + 1e-9) + 1;
   if (count > 1e6) fail(text, "more than a million wavelengths");
+  // Grid points are snapped to the decimals the range is written with (400:700:0.1 gives 400.3,
+  // not 400.29999999999995), so that they print as written.
+  const int places = std::max({decimals(parts[0]), decimals(parts[2])});
+  const bool snap = decimals(parts[0]) >= 0 && decimals(parts[2]) >= 0 && places <= 12;
   std::vector<double> wavelengths;
   for (long i = 0; i < static_cast<long>(count); ++i) {
-    wavelengths.push_back(start + static_cast<double>(i) * step);
+    const double exact = start + static_cast<double>(i) * step;
+    wavelengths.push_back(snap ? std::stod(fmt::format("{:.{}f}", exact, places)) : exact);
     // A step below the spacing of doubles near start would repeat wavelengths.
     if (i > 0 && !(wavelengths.back() > wavelengths[wavelengths.size() - 2]))
       fail(text, "step is too small to separate wavelengths near " + parts[0]);
@@ -59,5 +75,7 @@ std::vector<double> parseWavelengthList(const std::string& text) {
   for (const auto& token : split(text, ',')) wavelengths.push_back(parseNumber(text, token));
   return wavelengths;
 }
+
+std::string formatWavelength(double nm) { return fmt::format("{}", nm); }
 
 }  // namespace hylios

@@ -9,5 +9,8 @@ namespace hylios {
 /// Throws std::invalid_argument with a message such as
 /// "--wavelengths '250:2500:0': step must be positive".
 std::vector<double> parseWavelengthList(const std::string& text);
+/// A wavelength as written in CSVs: the shortest text that reads back as the same double
+/// ("550.0001", "2499.9975", "550"), so that distinct wavelengths never print alike.
+std::string formatWavelength(double nm);
 
 }  // namespace hylios

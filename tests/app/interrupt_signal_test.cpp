@@ -7,6 +7,9 @@
 
 #include <csignal>
 #include <stdexcept>
+#include <string>
+
+#include "renderer/tracing/exit_table_cache.h"
 
 using hylios::InterruptSignalScope;
 
@@ -61,4 +64,26 @@ TEST(InterruptSignalScope, ExitStatusAndNames) {
   EXPECT_EQ(InterruptSignalScope::exitStatusFor(SIGTERM), 143);
   EXPECT_STREQ(InterruptSignalScope::signalName(SIGINT), "SIGINT");
   EXPECT_STREQ(InterruptSignalScope::signalName(SIGTERM), "SIGTERM");
+}
+
+// Issue 13 row 8: the first signal is acknowledged at once, and during an exit-table build it
+// says that the table is finished (and cached) before the command stops.
+TEST(InterruptSignalScope, SaysAtOnceWhatItFinishesBeforeStopping) {
+  testing::internal::CaptureStderr();
+  {
+    const hylios::ExitTableCache::BuildInProgress building;
+    const InterruptSignalScope scope;
+    ASSERT_EQ(std::raise(SIGINT), 0);
+  }
+  const std::string duringBuild = testing::internal::GetCapturedStderr();
+  EXPECT_NE(duringBuild.find("SIGINT received; finishing the exit table being built"), std::string::npos)
+      << duringBuild;
+  testing::internal::CaptureStderr();
+  {
+    const InterruptSignalScope scope;
+    ASSERT_EQ(std::raise(SIGTERM), 0);
+  }
+  const std::string otherwise = testing::internal::GetCapturedStderr();
+  EXPECT_NE(otherwise.find("SIGTERM received; stopping after the current sample pass"), std::string::npos)
+      << otherwise;
 }

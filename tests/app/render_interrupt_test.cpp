@@ -37,7 +37,8 @@ std::string readBytes(const fs::path& path) {
 /// "pass done" (the render reported its first sample pass). Gives up after 120 s.
 ChildResult runHylios(const std::vector<std::string>& args, int signal = 0) {
   const fs::path binary = fs::path(HYLIOS_BINARY_DIR) / "hylios";
-  const fs::path errFile = fs::path(HYLIOS_BINARY_DIR) / "render_interrupt_test" / "stderr.txt";
+  // Per test process: CTest runs the tests of this file in parallel.
+  const fs::path errFile = fs::temp_directory_path() / ("hylios-render-interrupt-" + std::to_string(::getpid()) + ".err");
   int pipeFds[2];
   if (::pipe(pipeFds) != 0) throw std::runtime_error("pipe failed");
   const pid_t pid = ::fork();
@@ -176,4 +177,31 @@ TEST(RenderInterrupt, SignalsSaveACheckpointAndResumeGivesTheUninterruptedImage)
   std::size_t differing = 0;
   for (std::size_t i = 0; i < resumed.pixels.size(); ++i) differing += resumed.pixels[i] != reference.pixels[i];
   EXPECT_EQ(differing, 0u) << "of " << resumed.pixels.size() << " values";
+}
+
+// Issue 13 row 12: after an interrupted render, the same command without --resume neither
+// deletes the checkpoint nor overwrites the partial image; it says how to resume or discard.
+TEST(RenderInterrupt, RerunningWithoutResumeKeepsTheCheckpointAndSaysHowToGoOn) {
+  const fs::path folder = fs::path(HYLIOS_BINARY_DIR) / "render_interrupt_keep_test";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  ASSERT_TRUE(fs::exists(fs::path(HYLIOS_BINARY_DIR) / "hylios")) << "build the hylios target first";
+  const std::string scene = (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
+  const std::string out = (folder / "kept.exr").string();
+  const fs::path state = out + ".hylios-state";
+  fs::remove(out);
+  fs::remove(state);
+  const std::vector<std::string> args = {"render", scene, "--spp", "64", "--resolution", "64x64", "--seed", "5",
+                                         "--out", out, "--threads", "2"};
+  const ChildResult interrupted = runHylios(args, SIGINT);
+  ASSERT_EQ(interrupted.exitStatus, 130) << interrupted.out << interrupted.err;
+  ASSERT_TRUE(fs::exists(state));
+  const std::string exrBytes = readBytes(out), stateBytes = readBytes(state);
+  const ChildResult rerun = runHylios(args);
+  EXPECT_EQ(rerun.exitStatus, 1) << rerun.out << rerun.err;
+  EXPECT_NE(rerun.err.find("--resume"), std::string::npos) << rerun.err;
+  EXPECT_NE(rerun.err.find("delete that file"), std::string::npos) << rerun.err;
+  EXPECT_EQ(rerun.out.find("pass done"), std::string::npos) << "it rendered: " << rerun.out;
+  EXPECT_TRUE(readBytes(state) == stateBytes);
+  EXPECT_TRUE(readBytes(out) == exrBytes);
 }

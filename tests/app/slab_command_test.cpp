@@ -83,7 +83,7 @@ TEST(SlabCommandTest, BadLayerIsAnErrorAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(out));
   EXPECT_THROW(runCommand({"slab", "--layer", "n=1,mua=1,mus=1,g=0,d=1", "--rays", "0", "--out",
                            out.string()}),
-               std::invalid_argument);
+               CLI::ValidationError);
   EXPECT_THROW(runCommand({"slab", "--out", out.string()}), CLI::RequiredError);
 }
 
