@@ -202,13 +202,16 @@ FilmDesc readFilm(const toml::table& t, const TomlSource& src) {
 IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
   IntegratorDesc d;
   if (!t) return d;
-  Reader r(*t, "[integrator]", src, {"max_depth", "seed", "skin_mode", "effect_tolerance"});
+  Reader r(*t, "[integrator]", src, {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target"});
   d.where = r.where();
   d.maxDepth = static_cast<int>(r.integer("max_depth", 1, 1024, d.maxDepth));
   d.seed =
       static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
   if (r.has("skin_mode")) d.skinMode = r.choice("skin_mode", {"walk", "table"});
   d.effectTolerance = r.number("effect_tolerance", NumberRange::closed(0.0, 1.0), d.effectTolerance);
+  if (r.has("estimator"))
+    d.estimator = *skin::parseEstimator(r.choice("estimator", {"spectral", "per-wavelength"}));
+  if (r.has("noise_target")) d.noiseTarget = r.number("noise_target", NumberRange::closed(1e-6, 10.0));
   r.finish("[integrator]");
   return d;
 }
