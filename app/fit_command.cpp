@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/gnuplot_plot.h"
 #include "app/measured_spectrum.h"
 #include "app/specimen_options.h"
@@ -112,6 +113,10 @@ void runFit(const FitArguments& args) {
   const MeasuredSpectrum measured = loadMeasuredSpectrum(args.measured);
   skin::FitOptions options;
   options.free = splitList(args.free);
+  // The fitted specimen must not replace its start specimen or the measured curve (issue 13).
+  const std::string measuredPath = args.measured.substr(0, args.measured.rfind(':'));
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
+               {inputFile("--specimen", args.specimen.specimen), inputFile("--measured", measuredPath)});
   for (const auto& name : options.free) skin::fitQuantity(name);  // unknown names fail before any walk
   options.incidenceDeg = args.angleDeg;
   options.rays = args.rays;
@@ -157,16 +162,17 @@ void registerFitCommand(CLI::App& app) {
   addSpecimenOptions(*command, args->specimen);
   command->add_option("--measured", args->measured, "FILE:COLUMN of the measured curve (first column: nm)")->required();
   command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
-      ->check(CLI::Range(0.0, 89.999));
+      ->check(finiteRange(0.0, 89.999));
   command->add_option("--wavelengths", args->wavelengths, "start:stop:step or a comma list, nm (those the measurement covers are fitted)")
       ->capture_default_str();
   command->add_option("--free", args->free, "Comma list of quantities to fit, of: " + names)->capture_default_str();
   command->add_option("--out", args->out, "Specimen file (TOML) to write")->required();
   command->add_option("--plot", args->plot, "PNG plot of measured, start and fitted curves");
   command->add_option("--rays", args->rays, "Rays per wavelength and curve evaluation")
-      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{1} << 32))
+      ->check(unsignedRange(100, std::uint64_t{1} << 32))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed, the same for every evaluation (common random numbers)");
+  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1], the same for every evaluation (common random numbers)")
+      ->check(seedRange());
   command->add_option("--max-iterations", args->maxIterations, "Levenberg–Marquardt iterations at most")
       ->check(CLI::Range(1, 1000));
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));

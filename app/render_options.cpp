@@ -51,7 +51,7 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
                      "Render in passes until the estimated median per-pixel relative noise over the pixels that see "
                      "an object is at most this in every band (and R, G, B, chromaticity), or --spp is reached, "
                      "e.g. 0.05")
-      ->check(CLI::Range(1e-6, 10.0));
+      ->check(finiteRange(1e-6, 10.0));
 }
 
 RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {

@@ -53,6 +53,8 @@ std::string errorOf(const std::vector<std::string>& args) {
   registerRenderCommand(app);
   registerFigureCommand(app);
   registerImageDiffCommand(app);
+  registerFitCommand(app);
+  registerValidateCommand(app);
   std::vector<const char*> argv{"hylios"};
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
@@ -114,6 +116,12 @@ TEST(HostileUse, Row4NegativeOrOverflowingCountsAndSeedsAreRefusedEverywhere) {
               std::string::npos)
         << seed;
   }
+  for (const std::string seed : {"-1", "99999999999999999999999"}) {
+    EXPECT_NE(errorOf({"fit", "--measured", "m.csv:x", "--out", scratch / "f.toml", "--seed", seed}).find("--seed"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"validate", "--out", scratch / "v", "--seed", seed}).find("--seed"), std::string::npos);
+  }
+  EXPECT_NE(errorOf({"validate", "--out", scratch / "v", "--rays", "-1"}).find("--rays"), std::string::npos);
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(errorOf(slabWith({"--seed", "9223372036854775807", "--out", out})), "");  // 2^63 - 1, as scene files
 }
@@ -128,8 +136,13 @@ TEST(HostileUse, Row4EpsilonNanIsRefusedByRenderAndFigureLikeSpectrum) {
   }
   EXPECT_NE(errorOf({"spectrum", "--epsilon", "nan", "--out", scratch / "s.csv"}).find("--epsilon"),
             std::string::npos);
-  for (const std::string angle : {"nan", "inf"})
+  for (const std::string angle : {"nan", "inf"}) {
     EXPECT_NE(errorOf({"spectrum", "--angle", angle, "--out", scratch / "s.csv"}).find("--angle"), std::string::npos);
+    EXPECT_NE(errorOf({"fit", "--measured", "m.csv:x", "--angle", angle, "--out", scratch / "f.toml"}).find("--angle"),
+              std::string::npos);
+  }
+  EXPECT_NE(errorOf({"render", kScene, "--noise-target", "nan", "--out", scratch / "x.exr"}).find("--noise-target"),
+            std::string::npos);
 }
 
 // ---- row 5 ------------------------------------------------------------------------------------
@@ -189,6 +202,13 @@ TEST(HostileUse, Row6AnOutputThatIsAnInputIsRefusedBeforeAnyWork) {
     EXPECT_NE(errorOf(args).find("same file"), std::string::npos) << args[0];
     EXPECT_FALSE(fs::exists(csv)) << args[0];
   }
+  // fit --specimen S.toml --out S.toml: the fitted specimen over its start
+  EXPECT_NE(errorOf({"fit", "--specimen", specimen, "--measured",
+                     (kSource / "tests/data/validation/ncsu_vrhel1994_skin.csv").string() + ":obj117", "--out",
+                     specimen})
+                .find("input"),
+            std::string::npos);
+  EXPECT_EQ(readAll(specimen), specimenText);
   // figure a/x.toml b/x.toml: two renders into one DIR/x.exr
   fs::create_directories(scratch.path / "a");
   fs::create_directories(scratch.path / "b");
