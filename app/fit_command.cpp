@@ -65,10 +65,17 @@ std::string fitReport(const skin::FitResult& fit, const MeasuredSpectrum& measur
     char line[256];
     std::snprintf(line, sizeof line, "  %-26s %9s  %9s  %9s   [%s, %s] %s%s\n", q.quantity.name.c_str(),
                   fmtValue(q.start).c_str(), fmtValue(q.value).c_str(),
-                  q.atBound ? "at bound" : fmtValue(q.uncertainty).c_str(), fmtValue(q.quantity.lower).c_str(),
+                  q.atBound ? "at bound"
+                  : q.uncertainty > q.quantity.upper - q.quantity.lower ? "unconstr."
+                                                                         : fmtValue(q.uncertainty).c_str(), fmtValue(q.quantity.lower).c_str(),
                   fmtValue(q.quantity.upper).c_str(), q.quantity.unit.c_str(), q.atBound ? " (at a bound)" : "");
     out << line;
   }
+  for (const auto& q : fit.quantities)
+    if (!q.atBound && q.uncertainty > q.quantity.upper - q.quantity.lower) {
+      out << "  (unconstr.: σ wider than the bound range, the curve does not determine it)\n";
+      break;
+    }
   char line[256];
   std::snprintf(line, sizeof line, "RMS %.4f (start %.4f), %zu curve evaluations, %d iterations, %.1f s: %s\n",
                 fit.rms, fit.startRms, fit.evaluations, fit.iterations, seconds, fit.stopReason.c_str());
@@ -106,6 +113,10 @@ void checkOutputFolder(const std::string& option, const std::string& path) {
 void runFit(const FitArguments& args) {
   checkOutputFolder("--out", args.out);
   checkOutputFolder("--plot", args.plot);
+  // The fitted specimen must not replace its start specimen or the measured curve (issue 13).
+  const std::string measuredPath = args.measured.substr(0, args.measured.rfind(':'));
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
+               {inputFile("--specimen", args.specimen.specimen), inputFile("--measured", measuredPath)});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen start = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -113,10 +124,6 @@ void runFit(const FitArguments& args) {
   const MeasuredSpectrum measured = loadMeasuredSpectrum(args.measured);
   skin::FitOptions options;
   options.free = splitList(args.free);
-  // The fitted specimen must not replace its start specimen or the measured curve (issue 13).
-  const std::string measuredPath = args.measured.substr(0, args.measured.rfind(':'));
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
-               {inputFile("--specimen", args.specimen.specimen), inputFile("--measured", measuredPath)});
   for (const auto& name : options.free) skin::fitQuantity(name);  // unknown names fail before any walk
   options.incidenceDeg = args.angleDeg;
   options.rays = args.rays;
