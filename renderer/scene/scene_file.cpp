@@ -186,7 +186,7 @@ FilmDesc readFilm(const toml::table& t, const TomlSource& src) {
   f.width = static_cast<int>(w);
   f.height = static_cast<int>(h);
   f.samplesPerPixel = static_cast<int>(r.integer("spp", 1, kMaxSamplesPerPixel));
-  f.exposure = r.number("exposure", NumberRange::positive(), 1.0);
+  f.exposure = r.number("exposure", NumberRange::closed(1e-6, 1e6), 1.0);
   NameRegistry names("band");
   int index = 0;
   for (const toml::table* band : arrayOfTables(r, "band", "[[film.band]]")) {
@@ -325,9 +325,10 @@ SkinMaterialDesc readSkin(Reader& r) {
   if (const toml::table* t = r.table("freckles")) {
     Reader f(*t, r.label() + " freckles", r.source(),
              {"density_per_cm2", "radius_cm", "melanin_gain", "seed"});
-    skin.freckles.densityPerCm2 = f.number("density_per_cm2", NumberRange::nonNegative());
-    skin.freckles.radiusCm = f.number("radius_cm", NumberRange::positive(), 0.15);
-    skin.freckles.melaninGain = f.number("melanin_gain", NumberRange::positive(), 3);
+    // Bounded (issue 13): a density of 1e300 per cm² would make the freckle field without end.
+    skin.freckles.densityPerCm2 = f.number("density_per_cm2", NumberRange::closed(0, 1e4));
+    skin.freckles.radiusCm = f.number("radius_cm", NumberRange::closed(1e-4, 10), 0.15);
+    skin.freckles.melaninGain = f.number("melanin_gain", {0, 1e3, true, false}, 3);
     skin.freckles.seed = static_cast<std::uint64_t>(
         f.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
     f.finish("'freckles'");
@@ -336,8 +337,8 @@ SkinMaterialDesc readSkin(Reader& r) {
     Reader m(*t, r.label() + " melanin_map", r.source(),
              {"file", "min_multiplier", "max_multiplier"});
     skin.melaninMap = m.existingFile("file");
-    skin.melaninMapMin = m.number("min_multiplier", NumberRange::nonNegative());
-    skin.melaninMapMax = m.number("max_multiplier", NumberRange::nonNegative());
+    skin.melaninMapMin = m.number("min_multiplier", NumberRange::closed(0, 1e3));
+    skin.melaninMapMax = m.number("max_multiplier", NumberRange::closed(0, 1e3));
     m.finish("'melanin_map'");
   }
   skin.waterReduction = r.number("water_reduction_percent", kPercent, 0) / 100;

@@ -11,6 +11,13 @@
 namespace hylios {
 namespace {
 
+// Magnitude limits of spectra (issue 13; docs/scene-format.md): radiances and table values at most
+// 1e12 (the film holds floats, 3.4e38, after sums over samples), a blackbody between 10 K and
+// 1e6 K, an LED's centre and width within (0, 1e5] nm and a width of at least 1e-3 nm (a narrower
+// Gaussian underflows to 0/0 at its centre).
+constexpr double kMaxSpectrumValue = 1e12;
+const NumberRange kScaleRange = NumberRange::closed(0, kMaxSpectrumValue);
+
 using Reader = TomlTableReader;
 
 skin::SpectralTable loadTable(const std::filesystem::path& file, const SourceLocation& where) {
@@ -41,8 +48,8 @@ void readTableFile(Reader& r, EmissionDesc& e) {
   e.tableWavelengthNm = table.wavelengthsNm();
   e.tableValue = table.column(column);
   for (std::size_t i = 0; i < e.tableValue.size(); ++i)
-    if (!(e.tableValue[i] >= 0))
-      throw SceneError(where, fmt::format("'{}': value {} at {} nm must be >= 0", file.string(),
+    if (!(e.tableValue[i] >= 0 && e.tableValue[i] <= kMaxSpectrumValue))
+      throw SceneError(where, fmt::format("'{}': value {} at {} nm must be in [0, 1e12]", file.string(),
                                           e.tableValue[i], e.tableWavelengthNm[i]));
 }
 
@@ -52,7 +59,7 @@ void readTabulated(Reader& r, EmissionDesc& e) {
                      "a tabulated spectrum has either 'file' or 'wavelengths_nm' + 'values'");
   if (r.has("file")) return readTableFile(r, e);
   e.tableWavelengthNm = r.numbers("wavelengths_nm", 0, NumberRange::positive());
-  e.tableValue = r.numbers("values", 0, NumberRange::nonNegative());
+  e.tableValue = r.numbers("values", 0, kScaleRange);
   if (e.tableValue.size() != e.tableWavelengthNm.size())
     throw SceneError(r.whereValue("values"),
                      fmt::format("'values' has {} entries, 'wavelengths_nm' {}",
@@ -81,17 +88,17 @@ EmissionDesc readSpectrum(const toml::table& t, const std::string& label, const 
   EmissionDesc e;
   e.where = r.where();
   const std::string type = r.choice("type", {"constant", "d65", "blackbody", "led", "tabulated"});
-  e.scale = r.number("scale", NumberRange::nonNegative(), 1.0);
+  e.scale = r.number("scale", kScaleRange, 1.0);
   if (type == "constant") e.kind = EmissionDesc::Kind::Constant;
   if (type == "d65") e.kind = EmissionDesc::Kind::D65;
   if (type == "blackbody") {
     e.kind = EmissionDesc::Kind::Blackbody;
-    e.temperatureK = r.number("temperature_k", NumberRange::positive());
+    e.temperatureK = r.number("temperature_k", NumberRange::closed(10, 1e6));
   }
   if (type == "led") {
     e.kind = EmissionDesc::Kind::Led;
-    e.centreNm = r.number("centre_nm", NumberRange::positive());
-    e.fwhmNm = r.number("fwhm_nm", NumberRange::positive());
+    e.centreNm = r.number("centre_nm", {0, 1e5, true, false});
+    e.fwhmNm = r.number("fwhm_nm", NumberRange::closed(1e-3, 1e5));
   }
   if (type == "tabulated") {
     e.kind = EmissionDesc::Kind::Tabulated;

@@ -179,3 +179,37 @@ TEST(SceneLimits, Row11ErrorsSayWhatIsReallyWrong) {
 
 }  // namespace
 }  // namespace hylios
+
+namespace hylios {
+namespace {
+
+// The same class found beyond the rows: spectra and skin extras at extreme magnitudes were
+// accepted and gave inf/NaN radiance (found only when the EXR refused the film, after the render)
+// or an endless freckle field.
+TEST(SceneLimits, SpectraAndSkinExtrasAtExtremeMagnitudesAreRefused) {
+  const std::string env = "emission = { type = \"constant\", scale = 1.0 }";
+  const std::vector<std::string> emissions = {
+      "emission = { type = \"constant\", scale = 1e300 }",
+      "emission = { type = \"blackbody\", temperature_k = 1e-300 }",
+      "emission = { type = \"blackbody\", temperature_k = 1e300 }",
+      "emission = { type = \"led\", centre_nm = 550, fwhm_nm = 1e-300 }",
+      "emission = { type = \"tabulated\", wavelengths_nm = [300, 800], values = [1e300, 1] }",
+  };
+  for (const std::string& emission : emissions) {
+    const std::string error = sceneError(edited(env, emission));
+    EXPECT_NE(error.find("must be in"), std::string::npos) << emission << ": " << error;
+  }
+  const std::vector<std::pair<std::string, std::string>> extras = {
+      {"spp = 4", "spp = 4\nexposure = 1e300"},
+      {"specimen = \"S1\"", "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1e300 }"},
+      {"specimen = \"S1\"", "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1, radius_cm = 1e-300 }"},
+      {"specimen = \"S1\"", "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1, melanin_gain = 1e300 }"},
+  };
+  for (const auto& [from, to] : extras) {
+    const std::string error = sceneError(edited(from, to));
+    EXPECT_NE(error.find("must be in"), std::string::npos) << to << ": " << error;
+  }
+}
+
+}  // namespace
+}  // namespace hylios
