@@ -63,6 +63,10 @@ struct WalkOptions {
   /// Spectral walk (skin/spectral_walk.h) only: book the absorbed weight per layer (one exp per
   /// layer stay and wavelength); without it only the total absorptance (1 − R − T) is scored.
   bool layerAbsorption = true;
+  /// Spectral walk only (renders): at the first facet from air whose mirror image leaves the
+  /// surface, score that reflection for every λ at once (SpectralPath::surfaceWeight, expected
+  /// value) and force the path through the facet instead of drawing the Fresnel choice.
+  bool splitEntryReflection = false;
 };
 
 /// Distance travelled in each layer by one ray (cm), indexed by index(Layer); filled on request

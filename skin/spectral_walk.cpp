@@ -53,6 +53,7 @@ class SpectralWalk::State {
     path.surfaceWeight.clear();
     stays.clear();
     logDensity.assign(n, 0.0);
+    proposalOffset.assign(n, 0.0);
   }
   SpectralPath& path;
   std::vector<double>& ratio;            ///< scratch for MIS ratios
@@ -67,17 +68,21 @@ class SpectralWalk::State {
   std::array<double, kLayerCount> pathCm{};      ///< by slab: path travelled there (λ-free)
   std::array<double, kLayerCount> melaninCm{};   ///< by slab: path inside melanin (λ-free)
   std::vector<double> logDensity;        ///< per λ: log p_λ(path) up to a common factor
+  /// Per hero j: log q_j(path) − log p_j(path), q_j the density with which hero j proposed the
+  /// path (0 except after a forced transmission, where q_j lacks the Fresnel factor).
+  std::vector<double> proposalOffset;
 
-  /// Per λ: p_λ / mean_j p_j (1 for a single wavelength), into `out`.
+  /// Per λ: p_λ / mean_j q_j (1 for a single wavelength sampled by its own law), into `out`.
   void misRatios(std::vector<double>& out) const {
     const std::size_t n = logDensity.size();
     out.assign(n, 1.0);
-    if (n == 1) return;
-    const double top = *std::max_element(logDensity.begin(), logDensity.end());
-    double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += out[i] = std::exp(logDensity[i] - top);
-    const double scale = static_cast<double>(n) / sum;
-    for (double& r : out) r *= scale;
+    double top = -std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < n; ++j) top = std::max({top, logDensity[j], logDensity[j] + proposalOffset[j]});
+    if (!std::isfinite(top)) return out.assign(n, 0.0);
+    double proposal = 0;
+    for (std::size_t j = 0; j < n; ++j) proposal += std::exp(logDensity[j] + proposalOffset[j] - top);
+    const double scale = static_cast<double>(n) / proposal;
+    for (std::size_t i = 0; i < n; ++i) out[i] = std::exp(logDensity[i] - top) * scale;
   }
 };
 
@@ -162,7 +167,8 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
   }
 }
 
-void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path) const {
+void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
+                         bool splitEntryReflection) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);
   path.events = 1;
   path.exitOffsetXCm = path.exitOffsetYCm = 0;
@@ -171,7 +177,7 @@ void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
                : std::min(wavelengthCount_ - 1,
                           static_cast<std::size_t>(rng.uniform() * static_cast<double>(wavelengthCount_)));
   s.direction = incidentDirection;
-  if (crossSurface(s, false, rng)) return traceEntered(s, rng);
+  if (crossSurface(s, false, rng, splitEntryReflection)) return traceEntered(s, rng);
   path.end = PathEnd::SurfaceReflection;
   path.exitDirection = s.direction;
   s.misRatios(path.exitWeight);
@@ -205,13 +211,14 @@ void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
 }
 
 bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta,
-                              bool fromInside, Rng& rng) const {
+                              bool fromInside, Rng& rng, bool forceTransmission) const {
   const double nFromH = fromInside ? surfaceIndex_[s.hero] : 1.0;
   const double nToH = fromInside ? 1.0 : surfaceIndex_[s.hero];
   const Vec3 d = s.direction;
   const double cosI = dot(d, m);
   const FresnelResult hero = fresnel(cosI, nFromH, nToH);
-  const bool reflect = nFromH != nToH && (hero.reflectance >= 1.0 || rng.uniform() < hero.reflectance);
+  const bool reflect = !forceTransmission && nFromH != nToH &&
+                       (hero.reflectance >= 1.0 || rng.uniform() < hero.reflectance);
   auto indices = [&](std::size_t i) {
     return fromInside ? std::pair{surfaceIndex_[i], 1.0} : std::pair{1.0, surfaceIndex_[i]};
   };
@@ -228,7 +235,14 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
   }
   const Vec3 t = refractDirection(d, m, nFromH, nToH, hero.cosTransmitted);
   s.direction = t;
-  if (!surfaceIndicesDiffer_) return true;
+  if (!surfaceIndicesDiffer_) {
+    if (forceTransmission)  // one index: the target has the factor 1 − F, the proposal not
+      for (std::size_t i = 0; i < wavelengthCount_; ++i) {
+        s.logDensity[i] += std::log1p(-hero.reflectance);
+        s.proposalOffset[i] -= std::log1p(-hero.reflectance);
+      }
+    return true;
+  }
   for (std::size_t i = 0; i < wavelengthCount_; ++i) {
     const auto [n1, n2] = indices(i);
     double& logDensity = s.logDensity[i];
@@ -258,11 +272,14 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
     const double jacobianDenominator = n1 * cosD - n2 * cosT;
     logDensity += -2.0 * std::log(facetDensity) + std::log1p(-f.reflectance) +
                   std::log(n2 * n2 * std::fabs(cosT)) - 2.0 * std::log(std::fabs(jacobianDenominator));
+    // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
+    // lacks its (1 − F), which the MIS denominator must not hold either.
+    if (forceTransmission) s.proposalOffset[i] -= std::log1p(-f.reflectance);
   }
   return true;
 }
 
-bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng) const {
+bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry) const {
   const double towardFar = s.direction.z > 0 ? 1.0 : -1.0;
   bool onFarSide = false;
   for (int attempt = 0; attempt <= kMaxSurfaceBounces; ++attempt) {
@@ -284,7 +301,19 @@ bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng) const {
       }
     }
     const bool inSkin = fromInside != onFarSide;
-    const bool transmitted = crossFacet(s, m, macroNormal, delta, inSkin, rng);
+    // The entry split (WalkOptions::splitEntryReflection): when the first facet's mirror image of
+    // the ray leaves the surface, every λ scores that reflection with its Fresnel weight at once
+    // and the path is forced through the facet (the Fresnel choice is not drawn).
+    const Vec3 mirrored = reflectDirection(s.direction, m);
+    const bool split = splitEntry && !fromInside && attempt == 0 && !delta &&
+                       mirrored.z * towardFar < 0;
+    if (split) {
+      s.path.surfaceWeight.resize(wavelengthCount_);
+      for (std::size_t i = 0; i < wavelengthCount_; ++i)
+        s.path.surfaceWeight[i] = fresnelReflectance(dot(s.direction, m), 1.0, surfaceIndex_[i]);
+      s.path.surfaceDirection = mirrored;
+    }
+    const bool transmitted = crossFacet(s, m, macroNormal, delta, inSkin, rng, split);
     if (transmitted) onFarSide = !onFarSide;
     const double awaySign = onFarSide ? towardFar : -towardFar;
     if (s.direction.z * awaySign > 0) return onFarSide;
@@ -346,8 +375,8 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
         depth += slabs_[k].muA_perCm[i] * s.pathCm[k] + melaninMuA_perCm_[i] * s.melaninCm[k];
     }
     path.exitWeight[i] = scores ? s.roulette * std::exp(-depth) * ratio[i] : 0.0;
-    const double surface = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i];
-    path.absorbedTotal[i] = ratio[i] - path.exitWeight[i] - surface;  // E = 1 − R − T
+    // E[ratio] = 1 − (the surface weight scored at a split entry): E = 1 − R − T.
+    path.absorbedTotal[i] = ratio[i] - path.exitWeight[i];
   }
 }
 

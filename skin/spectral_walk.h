@@ -101,7 +101,11 @@ class SpectralWalk {
   const WalkOptions& options() const { return options_; }
 
   /// Follows one path arriving from air along `incidentDirection` (z > 0); `path` is reused.
-  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path) const;
+  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path) const {
+    trace(incidentDirection, rng, path, options_.splitEntryReflection);
+  }
+  /// The same with the entry split (WalkOptions::splitEntryReflection) chosen per call.
+  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path, bool splitEntryReflection) const;
 
  private:
   struct Slab {
@@ -128,10 +132,10 @@ class SpectralWalk {
   void traceEntered(State& s, Rng& rng) const;
   /// The rough (or smooth) surface crossing of Sec. 4.3 from air (fromInside false) or from the
   /// skin; returns whether the ray ended on the far side, updating s.direction and densities.
-  bool crossSurface(State& s, bool fromInside, Rng& rng) const;
+  bool crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry = false) const;
   /// One Fresnel test on facet m (the macro normal when `delta`); true when transmitted.
   bool crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta, bool fromInside,
-                  Rng& rng) const;
+                  Rng& rng, bool forceTransmission = false) const;
   /// The smooth bottom of a truncated stack into options.belowRefractiveIndex; true when through.
   bool crossBottom(State& s, Rng& rng) const;
   /// Ends the stay in the current slab: adds its path lengths (and records it for layer absorption).

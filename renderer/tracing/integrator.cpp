@@ -200,20 +200,22 @@ Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const 
 void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
                           double* L) const {
   ++stats.paths;
+  std::fill(L, L + spectrum.size(), 0.0);
+  tracePath(cameraRay, 0, std::vector<double>(spectrum.size(), 1.0), spectrum, rng, stats, L, spectrum.spectral);
+}
+
+void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughput, const PathSpectrum& spectrum,
+                           skin::Rng& rng, RenderStats& stats, double* L, bool splitFirstSkinHit) const {
   const std::size_t n = spectrum.size();
   const int maxDepth = scene_.integrator.maxDepth;
-  Ray ray = cameraRay;
-  thread_local std::vector<double> betaStore, albedoStore;
-  betaStore.assign(n, 1.0);
-  albedoStore.assign(n, 0.0);
-  double* beta = betaStore.data();
+  std::vector<double> albedoStore(n, 0.0);
+  double* beta = throughput.data();
   double* albedo = albedoStore.data();
-  std::fill(L, L + n, 0.0);
   bool lastSpecular = true;  // camera, dielectric or skin surface reflection: emitters count fully
   double lastPdf = 0;        // density (sr⁻¹) of the continued direction, for MIS at emitters
   glm::dvec3 lastPoint = ray.origin;
   auto anyThroughput = [&] { return std::any_of(beta, beta + n, [](double b) { return b > 0; }); };
-  for (int depth = 0;; ++depth) {
+  for (int depth = firstDepth;; ++depth) {
     const std::optional<SurfaceHit> hit = geometry_->intersect(ray);
     if (!hit) {
       if (lights_->hasEnvironment()) {
@@ -243,7 +245,18 @@ void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, sk
     const double* lobeAlbedo = nullptr;
     if (material.kind == MaterialDesc::Kind::Skin) {
       ++stats.skinWalks;
-      const SkinScatter s = scatterSkin(*material.skin, *hit, ray.direction, spectrum, rng, beta);
+      // The first skin hit of a camera path splits its entry (the surface reflection scored at
+      // once, the walk forced in): one coin fewer where most of the image's skin noise is made.
+      const bool split = splitFirstSkinHit && spectrum.spectral;
+      splitFirstSkinHit = false;
+      std::vector<double> surface(split ? n : 0, 0.0), before(beta, beta + n);
+      const SkinScatter s = scatterSkin(*material.skin, *hit, ray.direction, spectrum, rng, beta,
+                                        split ? surface.data() : nullptr);
+      if (s.surfaceBranch) {
+        for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
+        traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth, std::move(surface),
+                           spectrum, rng, stats, L);
+      }
       if (s.kind == SkinScatter::Kind::Absorbed) {
         ++stats.skinAbsorbed;
         break;
@@ -303,14 +316,32 @@ double Integrator::radiance(const Ray& ray, std::size_t channel, skin::Rng& rng,
   return L;
 }
 
+void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& incident,
+                                    const glm::dvec3& direction, int depth, std::vector<double> beta,
+                                    const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
+                                    double* L) const {
+  ++stats.skinSurfaceExits;
+  const FacingNormals facing = faceTheRay(incident, hit.geometricNormal, hit.shadingNormal);
+  addDirect(directLight(hit.position, facing.geometric, rng, true,
+                        [&](const glm::dvec3& w) { return skin.surfaceLobeDensity(incident, facing.shading, w); }),
+            spectrum, beta.data(), nullptr, L);
+  if (!(glm::dot(direction, facing.geometric) > 0)) {
+    ++stats.belowSurface;
+    return;
+  }
+  tracePath(spawn(hit.position, facing.geometric, direction, std::numeric_limits<double>::infinity()), depth + 1,
+            std::move(beta), spectrum, rng, stats, L, false);
+}
+
 SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& direction,
-                                    const PathSpectrum& spectrum, skin::Rng& rng, double* beta) const {
+                                    const PathSpectrum& spectrum, skin::Rng& rng, double* beta,
+                                    double* surfaceWeights) const {
   if (!spectrum.spectral)
     return skin.scatter(hit, direction, spectrum[0], *geometry_, materialOfShape_, rng);
   thread_local std::vector<double> weights;
   weights.resize(spectrum.size());
   const SkinScatter s = skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_, materialOfShape_, rng,
-                                             weights.data());
+                                             weights.data(), surfaceWeights);
   for (std::size_t i = 0; i < spectrum.size(); ++i) beta[i] *= weights[i];
   return s;
 }

@@ -146,8 +146,19 @@ class Integrator {
   void addDirect(const std::optional<DirectSample>& direct, const PathSpectrum& spectrum, const double* beta,
                  const double* albedo, double* L) const;
   /// The skin walk at a hit for the path's spectrum; multiplies beta by the exit weights (spectral).
+  /// surfaceWeights (spectral only, may be null): the entry split's surface weights.
   SkinScatter scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& direction,
-                          const PathSpectrum& spectrum, skin::Rng& rng, double* beta) const;
+                          const PathSpectrum& spectrum, skin::Rng& rng, double* beta,
+                          double* surfaceWeights = nullptr) const;
+  /// The rest of a path from `ray` (its vertex count so far `firstDepth`) with throughput
+  /// `throughput`, adding into L; splitFirstSkinHit: the first skin hit splits its entry.
+  void tracePath(Ray ray, int firstDepth, std::vector<double> throughput, const PathSpectrum& spectrum,
+                 skin::Rng& rng, RenderStats& stats, double* L, bool splitFirstSkinHit) const;
+  /// The surface reflection scored at a split skin entry: next-event estimation of delta lights
+  /// with the model lobe, then the reflected ray as a path of its own (no further split).
+  void traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& incident,
+                          const glm::dvec3& direction, int depth, std::vector<double> beta,
+                          const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats, double* L) const;
   /// Marks the pixels whose centre ray sees a shape that does not emit (the noise mask).
   void setCoverage(Film& film) const;
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).

@@ -132,7 +132,7 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
 
 SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t bundle,
                                           const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
-                                          skin::Rng& rng, double* weights) const {
+                                          skin::Rng& rng, double* weights, double* surfaceWeights) const {
   if (tables_) throw std::logic_error("SkinMaterial::scatterSpectral: table mode has no spectral walks");
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
   const skin::Frame frame(toSkin(-normals.shading));
@@ -140,10 +140,16 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   const int level = walks_->level(melaninMultiplier(hit), rng.uniform());
   const skin::SpectralWalk& walk = walks_->spectralWalk(bundle, level);
   thread_local skin::SpectralPath path;  // reused: the walk keeps its per-λ arrays there
-  walk.trace(incident, rng, path);
+  walk.trace(incident, rng, path, surfaceWeights != nullptr);
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
-  return exitOf(hit, direction, path.end, path.exitDirection, path.exitOffsetXCm, path.exitOffsetYCm, geometry,
-                materialOfShape);
+  SkinScatter out = exitOf(hit, direction, path.end, path.exitDirection, path.exitOffsetXCm, path.exitOffsetYCm,
+                           geometry, materialOfShape);
+  if (surfaceWeights && !path.surfaceWeight.empty()) {
+    out.surfaceBranch = true;
+    out.surfaceDirection = glm::normalize(toGlm(frame.toWorld(path.surfaceDirection)));
+    for (std::size_t i = 0; i < walk.size(); ++i) surfaceWeights[i] = path.surfaceWeight[i];
+  }
+  return out;
 }
 
 SkinScatter SkinMaterial::exitOf(const SurfaceHit& hit, const glm::dvec3& direction, skin::PathEnd end,

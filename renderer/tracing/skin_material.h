@@ -74,6 +74,10 @@ struct SkinScatter {
   glm::dvec3 geometricNormal;    ///< at `point`, same side
   glm::dvec3 direction;          ///< SurfaceReflection: the walk's exit direction (world, unit)
   bool exitFallback = false;     ///< SubsurfaceReflection: no surface found, exit at the entry point
+  /// Spectral walk with the entry split: the surface reflection scored at once (weights in the
+  /// caller's array) along surfaceDirection from the entry point, besides the main outcome.
+  bool surfaceBranch = false;
+  glm::dvec3 surfaceDirection{0};
 };
 
 class SkinMaterial {
@@ -101,9 +105,12 @@ class SkinMaterial {
   /// constructor) at `hit`; weights[i] receives the exit weight of the bundle's i-th channel (the
   /// factor on the path throughput; all 0 when the walk was ended by Russian roulette, which is
   /// reported as Absorbed). Walk mode only (throws std::logic_error in table mode).
+  /// With `surfaceWeights` (not null) the entry split is on: a surface reflection that a single
+  /// facet sends out is scored into surfaceWeights[i] and the walk goes on into the skin
+  /// (SkinScatter::surfaceBranch; skin/skin_walk.h, WalkOptions::splitEntryReflection).
   SkinScatter scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t bundle,
                               const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
-                              skin::Rng& rng, double* weights) const;
+                              skin::Rng& rng, double* weights, double* surfaceWeights = nullptr) const;
 
   /// The model lobe g (per sr) of a surface reflection into `outgoing` for a ray travelling along
   /// `incident` onto a surface with outward normal `normal` (all unit, world).

@@ -68,7 +68,7 @@ std::string compare(const SkinTally& spectral, const SkinTally& analog, const st
 }
 
 /// Spectral and per-wavelength walks of `specimen` at 0°, 45° and 80° over kWavelengthsNm.
-void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays) {
+void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays, const WalkOptions& walk = {}) {
   const std::vector<SkinOptics> optics = opticsAt(specimen, kWavelengthsNm);
   std::string failures;
   for (double angle : {0.0, 45.0, 80.0}) {
@@ -76,6 +76,7 @@ void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays) 
     spectral.incidenceDeg = angle;
     spectral.rays = rays;
     spectral.seed = 11;
+    spectral.walk = walk;
     const std::vector<SkinTally> s = simulateSkinSpectral(optics, spectral);
     for (std::size_t i = 0; i < optics.size(); ++i) {
       WalkRunOptions analog;
@@ -98,6 +99,13 @@ TEST(SpectralWalk, S1MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S1",
 TEST(SpectralWalk, S2MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S2", 6000); }
 TEST(SpectralWalk, S3MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S3", 6000); }
 TEST(SpectralWalk, S4MatchesPerWavelengthWalk) { expectSameAsPerWavelength("S4", 6000); }
+
+TEST(SpectralWalk, SplitEntryReflectionKeepsEveryExpectation) {
+  // The renders' entry split: surface reflection scored as an expected value, transmission forced.
+  WalkOptions walk;
+  walk.splitEntryReflection = true;
+  expectSameAsPerWavelength("S2", 6000, walk);
+}
 
 TEST(SpectralWalk, TabulatedMelanosomesMatchTheExactWalk) {
   // The fast default draws each melanosome's internal path from a 2¹⁸-path table.
