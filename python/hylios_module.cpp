@@ -276,6 +276,7 @@ struct SpectrumRequest {
 };
 
 constexpr std::uint64_t kSpectrumPilotRays = 2000;  // as app/spectrum_command.cpp
+constexpr std::uint64_t kMaxRays = std::uint64_t{1} << 40;  // the commands' --rays bound
 
 std::optional<skin::EffectPlan> planWavelength(const SpectrumRequest& r, const skin::SkinOptics& optics) {
   if (r.effectTolerance == 0) return std::nullopt;
@@ -315,7 +316,7 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
   if (skinModel != "walk" && skinModel != "table")
     throw std::invalid_argument("skin_model '" + skinModel + "': expected 'walk' or 'table'");
   if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
-  if (rays < 1) throw std::invalid_argument("rays must be positive");
+  if (rays < 1 || rays > kMaxRays) throw std::invalid_argument("rays must lie in [1, 2^40]");
   if (!(epsilon >= 0 && epsilon <= 1)) throw std::invalid_argument("epsilon must lie in [0, 1]");
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
 
@@ -351,7 +352,7 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
             if (bar) bar->advance();
           });
         }
-        if (bar && !stop()) bar->finish();
+        if (bar) stop() ? bar->stop() : bar->finish();
       },
       cancellable);
 
@@ -455,7 +456,7 @@ py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double ang
               int threads) {
   requireEstimator(estimator);
   if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
-  if (rays < 1) throw std::invalid_argument("rays must be positive");
+  if (rays < 1 || rays > kMaxRays) throw std::invalid_argument("rays must lie in [1, 2^40]");
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
   const std::vector<double> wavelengths = parseWavelengthList(wavelengthText);
   const std::vector<skin::SkinOptics> optics = opticsOf(s.specimen, wavelengths);
@@ -521,7 +522,7 @@ py::dict radialProfile(const PySpecimen& s, double wavelengthNm, double angleDeg
                        int threads) {
   requireEstimator(estimator);
   if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
-  if (rays < 1) throw std::invalid_argument("rays must be positive");
+  if (rays < 1 || rays > kMaxRays) throw std::invalid_argument("rays must lie in [1, 2^40]");
   if (!(maxRadiusCm > 0)) throw std::invalid_argument("max_radius_cm must be positive");
   if (bins < 1) throw std::invalid_argument("bins must be positive");
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
@@ -570,6 +571,25 @@ template <class T>
 struct HasNoiseTarget<T, std::void_t<decltype(std::declval<T&>().noiseTarget)>> : std::true_type {};
 constexpr bool kRenderHasNoiseTarget = HasNoiseTarget<RenderSettings>::value;
 
+/// Whether the renderer's settings choose the skin estimator (issue 11) yet.
+template <class T, class = void>
+struct HasEstimator : std::false_type {};
+template <class T>
+struct HasEstimator<T, std::void_t<decltype(std::declval<T&>().estimator)>> : std::true_type {};
+constexpr bool kRenderHasEstimator = HasEstimator<RenderSettings>::value;
+
+template <class T>
+void setEstimator(T& settings, const std::optional<std::string>& estimator) {
+  if (!estimator) return;
+  requireEstimator(*estimator);
+  if constexpr (HasEstimator<T>::value) {
+    using Estimator = typename std::decay_t<decltype(settings.estimator)>::value_type;
+    settings.estimator = *estimator == "spectral" ? Estimator::Spectral : Estimator::PerWavelength;
+  } else {
+    throw std::invalid_argument("estimator: this renderer has no choice of estimator (it walks per wavelength)");
+  }
+}
+
 template <class T>
 void setNoiseTarget(T& settings, std::optional<double> target) {
   if constexpr (HasNoiseTarget<T>::value) {
@@ -582,7 +602,7 @@ void setNoiseTarget(T& settings, std::optional<double> target) {
 py::tuple render(const std::string& scenePath, std::optional<int> spp, std::optional<int> width,
                  std::optional<int> height, std::optional<std::uint64_t> seed, int threads,
                  std::optional<std::string> skinMode, std::optional<double> epsilon, std::optional<double> noiseTarget,
-                 bool progress, bool verbose) {
+                 std::optional<std::string> estimator, bool progress, bool verbose) {
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
   if (skinMode && *skinMode != "walk" && *skinMode != "table")
     throw std::invalid_argument("skin_model '" + *skinMode + "': expected 'walk' or 'table'");
@@ -600,6 +620,7 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
   if (noiseTarget && !(std::isfinite(*noiseTarget) && *noiseTarget > 0))
     throw std::invalid_argument("noise_target must be a positive relative noise");
   setNoiseTarget(settings, noiseTarget);
+  setEstimator(settings, estimator);
   if (progress) settings.progress = progressBarFactory();
   SceneDesc scene;
   RenderResult result;
@@ -789,7 +810,8 @@ PYBIND11_MODULE(_hylios, m) {
         "See hylios.radial_profile");
   m.def("render", &render, py::arg("scene_path"), py::arg("spp"), py::arg("width"), py::arg("height"),
         py::arg("seed"), py::arg("threads"), py::arg("skin_model"), py::arg("epsilon"), py::arg("noise_target"),
-        py::arg("progress"), py::arg("verbose"), "See hylios.render");
+        py::arg("estimator"), py::arg("progress"), py::arg("verbose"), "See hylios.render");
+  m.attr("render_has_estimator") = kRenderHasEstimator;
   m.attr("render_has_noise_target") = kRenderHasNoiseTarget;
   m.def("fit_quantities",
         [] {

@@ -130,6 +130,7 @@ class Specimen:
         return dict(self._core.values())
 
     def __repr__(self):
+        """Specimen('S1', key=value, ...)."""
         extra = (", " + ", ".join(self._overrides)) if self._overrides else ""
         return "Specimen(%r%s)" % (self.name, extra)
 
@@ -153,6 +154,7 @@ class Result:
         return {key: getattr(self, key) for key in self._fields}
 
     def __repr__(self):
+        """Kind(field: array[shape], ...)."""
         parts = []
         for key in self._fields:
             value = getattr(self, key)
@@ -166,6 +168,7 @@ class Result:
 
 
 def _specimen(specimen):
+    """The compiled specimen of a ``Specimen`` or of a name/path (loaded without overrides)."""
     if isinstance(specimen, Specimen):
         return specimen._core
     if isinstance(specimen, (str, os.PathLike)):
@@ -182,6 +185,7 @@ def _wavelength_text(wavelengths):
 
 
 def _count(name, value):
+    """A non-negative integer argument (an integral float is accepted); TypeError/ValueError otherwise."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         if isinstance(value, float) and value.is_integer():
             value = int(value)
@@ -190,6 +194,14 @@ def _count(name, value):
     if value < 0:
         raise ValueError("%s must not be negative" % name)
     return int(value)
+
+
+def _seed(value):
+    """A seed in [0, 2^63-1], the commands' range."""
+    value = _count("seed", value)
+    if value > 2**63 - 1:
+        raise ValueError("seed must lie in [0, 2^63-1]")
+    return value
 
 
 def spectrum(specimen, wavelengths, angle_deg=45, rays=100000, seed=1, estimator="spectral",
@@ -212,7 +224,7 @@ def spectrum(specimen, wavelengths, angle_deg=45, rays=100000, seed=1, estimator
     ``absorptance_<layer>`` per layer; ``layers`` (names) and ``specimen`` (its name).
     """
     d = _hylios.spectrum(_specimen(specimen), _wavelength_text(wavelengths), float(angle_deg),
-                         _count("rays", rays), _count("seed", seed), str(estimator),
+                         _count("rays", rays), _seed(seed), str(estimator),
                          _count("threads", threads), float(epsilon), str(skin_model), bool(progress))
     values = {k: d[k] for k in ("wavelength_nm", "reflectance", "reflectance_stderr", "surface",
                                 "subsurface", "transmittance", "absorptance", "absorptance_stderr",
@@ -254,7 +266,7 @@ def brdf(specimen, wavelengths="380:780:10", angle_deg=45, rays=200000, seed=1, 
     as (mean, stderr).
     """
     d = _hylios.brdf(_specimen(specimen), _wavelength_text(wavelengths), float(angle_deg),
-                     _count("rays", rays), _count("seed", seed), _count("polar_bins", polar_bins),
+                     _count("rays", rays), _seed(seed), _count("polar_bins", polar_bins),
                      _count("azimuth_bins", azimuth_bins), str(estimator), _count("threads", threads))
     values = dict(d)
     values["per_sr"] = Result("Directions", dict(d["per_sr"]))
@@ -276,7 +288,7 @@ def radial_profile(specimen, wavelength_nm=550, angle_deg=0, rays=1000000, seed=
     (mean, stderr).
     """
     d = _hylios.radial_profile(_specimen(specimen), float(wavelength_nm), float(angle_deg),
-                               _count("rays", rays), _count("seed", seed), float(max_radius_cm),
+                               _count("rays", rays), _seed(seed), float(max_radius_cm),
                                _count("bins", bins), str(estimator), _count("threads", threads))
     values = dict(d)
     for key in ("beyond_max_radius", "subsurface_reflectance"):
@@ -285,13 +297,15 @@ def radial_profile(specimen, wavelength_nm=550, angle_deg=0, rays=1000000, seed=
 
 
 def render(scene_path, spp=None, noise_target=None, resolution=None, seed=None, threads=0,
-           skin_model=None, epsilon=None, progress=False, verbose=False):
+           skin_model=None, epsilon=None, estimator=None, progress=False, verbose=False):
     """Renders a scene file (``hylios render``) and returns ``(image, channel_wavelengths_nm)``.
 
     image: float32 array [height, width, channel] of the film's per-channel mean radiance (what
     the spectral EXR holds); channel_wavelengths_nm: float64 [channel]. spp, resolution ((W, H)
     or "WxH"), seed, skin_model ("walk"/"table") and epsilon override the scene's values when
-    given (None: the scene's, like the command without the option). threads: 0 = all cores;
+    given (None: the scene's, like the command without the option); so does estimator
+    ("spectral" or "per-wavelength") where the renderer has the choice
+    (``hylios._hylios.render_has_estimator``). threads: 0 = all cores;
     progress: the command's progress bar on a terminal; verbose: the command's report on stdout.
     noise_target: stop once the median relative per-pixel noise of every band is below it (spp
     then the most passes; renderer/image/render_noise.h), where the renderer has a noise target
@@ -313,11 +327,12 @@ def render(scene_path, spp=None, noise_target=None, resolution=None, seed=None, 
     if spp is not None:
         spp = int(spp)
     if seed is not None:
-        seed = _count("seed", seed)
+        seed = _seed(seed)
     image, wavelengths = _hylios.render(os.fspath(scene_path), spp, width, height, seed,
                                         _count("threads", threads), skin_model,
                                         None if epsilon is None else float(epsilon),
                                         None if noise_target is None else float(noise_target),
+                                        None if estimator is None else str(estimator),
                                         bool(progress), bool(verbose))
     return image, wavelengths
 
@@ -355,7 +370,7 @@ def fit(measured_wavelengths, measured_reflectance, specimen,
     r = np.asarray(measured_reflectance, dtype=float).ravel()
     d = _hylios.fit(w.tolist(), r.tolist(), _specimen(specimen), [str(n) for n in free],
                     None if wavelengths is None else _wavelength_text(wavelengths), float(angle_deg),
-                    _count("rays", rays), _count("seed", seed), _count("max_iterations", max_iterations),
+                    _count("rays", rays), _seed(seed), _count("max_iterations", max_iterations),
                     _count("threads", threads))
     quantities = [dict(q) for q in d["quantities"]]
     values = {

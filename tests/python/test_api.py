@@ -96,9 +96,19 @@ def test_render_returns_image_and_wavelengths():
     assert (again == image).all()  # deterministic at any thread count
     with pytest.raises(ValueError):
         hylios.render(scene, resolution="20by12")
-    if not hylios._hylios.render_has_noise_target:
+    if hylios._hylios.render_has_noise_target:
+        noisy, _ = hylios.render(scene, spp=4, resolution=(20, 12), noise_target=0.5)
+        assert noisy.shape == image.shape and np.isfinite(noisy).all()
+    else:
         with pytest.raises(NotImplementedError):
             hylios.render(scene, noise_target=0.05)
+    for estimator in ("spectral", "per-wavelength"):
+        if hylios._hylios.render_has_estimator:
+            walked, _ = hylios.render(scene, spp=2, resolution=(20, 12), estimator=estimator)
+            assert walked.shape == image.shape and walked.max() > 0
+        else:
+            with pytest.raises(ValueError):
+                hylios.render(scene, spp=2, resolution=(20, 12), estimator=estimator)
 
 
 def test_gil_is_released_during_a_call():
