@@ -311,6 +311,12 @@ std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath
   std::vector<fs::path> written;
   writeExr(images, film, extraAttributes, exrPath);
   written.push_back(exrPath);
+  // An EXR "file" that is a device or FIFO (--out /dev/null) was written in place
+  // (skin/core/atomic_file.h); previews beside it ("/dev/null_<band>.png") are files nobody asked
+  // for, so there are none (issue 13, row 5).
+  std::error_code error;
+  const fs::file_status status = fs::status(exrPath, error);
+  if (fs::exists(status) && !fs::is_regular_file(status)) return written;
 
   const std::string stem = exrPath.stem().string();
   const auto& bands = film.desc().bands;

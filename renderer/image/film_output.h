@@ -45,7 +45,8 @@ double colourBandNormalisation(const BandDesc& band);
 /// Writes `exrPath` and the previews; returns every file written (EXR first). The EXR header gets
 /// "hylios:spp" (samples per pixel done) and "hylios:sppTarget" (the film's target; less when a
 /// render was stopped early), plus `extraAttributes` as string attributes (name → value, e.g.
-/// "hylios:seed").
+/// "hylios:seed"). An `exrPath` that exists and is not a regular file (a device such as /dev/null,
+/// a FIFO) is written in place and gets no previews.
 std::vector<std::filesystem::path> writeFilmOutputs(
     const Film& film, const std::filesystem::path& exrPath,
     const std::vector<std::pair<std::string, std::string>>& extraAttributes = {});

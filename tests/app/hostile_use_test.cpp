@@ -3,10 +3,13 @@
 // in-process; the rows of the issue are named in each test.
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -155,6 +158,16 @@ TEST(HostileUse, Row5ASymlinkOutputWritesItsTargetAndStaysALink) {
   ASSERT_EQ(errorOf(slabWith({"--out", link})), "");
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
   EXPECT_NE(readAll(target).find("specular_reflectance"), std::string::npos);
+}
+
+TEST(HostileUse, Row5ARenderToACharacterDeviceWritesThroughItAndNoPreviewsBesideIt) {
+  if (::geteuid() != 0) GTEST_SKIP() << "making a device node needs root";
+  const Scratch scratch("row5dev");
+  const std::string device = scratch / "null";
+  ASSERT_EQ(::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)), 0);  // a second /dev/null
+  ASSERT_EQ(errorOf({"render", kScene, "--out", device, "--spp", "1", "--resolution", "8x8"}), "");
+  EXPECT_TRUE(fs::is_character_file(fs::symlink_status(device)));
+  EXPECT_EQ(std::distance(fs::directory_iterator(scratch.path), fs::directory_iterator{}), 1);  // no null_*.png
 }
 
 // ---- row 6 ------------------------------------------------------------------------------------
