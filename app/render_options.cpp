@@ -8,6 +8,8 @@
 #include "app/option_checks.h"
 #include "app/progress_bar.h"
 #include "renderer/scene/scene_file.h"
+#include "app/enum_option.h"
+#include "skin/skin_mode.h"
 
 namespace hylios {
 
@@ -35,8 +37,8 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_option("--spp", options.spp, "Samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
   command.add_option("--resolution", options.resolution, "WxH in pixels (default: the scene's)");
   command.add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  command.add_option("--skin-model", options.skinMode, "walk (exact HyLIoS walk per hit) or table (tabulated fast path); default: the scene's")
-      ->check(CLI::IsMember({"walk", "table"}));
+  addEnumOption(command, "--skin-model", options.skinMode, skin::kSkinModeNames,
+                "walk (exact HyLIoS walk per hit) or table (tabulated fast path); default: the scene's");
   command.add_option("--epsilon", options.effectTolerance,
                      "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped "
                      "(0 = simulate everything; default: the scene's, else 1e-3)")
@@ -63,7 +65,7 @@ RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {
     settings.height = h;
   }
   settings.threads = options.threads;
-  if (!options.skinMode.empty()) settings.skinMode = options.skinMode;
+  settings.skinMode = options.skinMode;
   if (options.effectTolerance >= 0) settings.effectTolerance = options.effectTolerance;
   settings.explain = options.explain;
   if (!options.estimator.empty()) settings.estimator = skin::parseEstimator(options.estimator);

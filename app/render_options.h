@@ -1,12 +1,14 @@
 // The options `hylios render` and `hylios figure` share, as given on the command line, and the
 // plain RenderSettings (renderer/tracing/render_job.h) they become.
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 
 #include <CLI/CLI.hpp>
 
 #include "renderer/tracing/render_job.h"
+#include "skin/skin_mode.h"
 
 namespace hylios {
 
@@ -17,7 +19,7 @@ struct RenderCommandOptions {
   int spp = 0;                 ///< 0: the scene's
   std::string resolution;      ///< "": the scene's, else WxH
   int threads = 0;             ///< 0: all cores
-  std::string skinMode;        ///< "": the scene's
+  std::optional<skin::SkinMode> skinMode;  ///< unset: the scene's
   double effectTolerance = -1; ///< < 0: the scene's
   bool explain = false;
   std::string estimator;       ///< "": the scene's, else spectral or per-wavelength

@@ -23,6 +23,8 @@
 #include "skin/skin_simulation.h"
 #include "skin/spectral_simulation.h"
 #include "skin/core/thread_limit.h"
+#include "app/enum_option.h"
+#include "skin/skin_mode.h"
 
 namespace hylios {
 namespace {
@@ -39,7 +41,7 @@ struct SpectrumArguments {
   int threads = 0;
   double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner; 0: full model
   bool explain = false;
-  std::string skinModel = "walk";  ///< "table": rays sampled from the cached exit table (skin/exit_table.h)
+  skin::SkinMode skinModel = skin::SkinMode::Walk;  ///< Table: rays sampled from the cached exit table (skin/exit_table.h)
   std::string estimator = "spectral";  ///< or "per-wavelength" (the analog walk, the reference)
 };
 
@@ -151,7 +153,7 @@ void runSpectrum(const SpectrumArguments& args) {
   std::vector<skin::SkinTally> tallies(wavelengths.size());
   std::vector<std::optional<skin::EffectPlan>> plans(wavelengths.size());
   ProgressBar progress("spectrum " + specimen.name, wavelengths.size());
-  if (args.estimator == "spectral" && args.skinModel == "walk") {
+  if (args.estimator == "spectral" && args.skinModel == skin::SkinMode::Walk) {
     // One path per bundle of wavelengths, the full model (no effect plan: bound 0), internal
     // melanosome paths drawn from the 2¹⁸-path table (skin/spectral_walk.h).
     skin::SpectralRunOptions spectral;
@@ -167,7 +169,7 @@ void runSpectrum(const SpectrumArguments& args) {
       skin::WalkRunOptions planned = run;
       if (plans[i]) planned.walk = plans[i]->walk;
       const skin::SkinOptics& walked = plans[i] ? plans[i]->optics : optics[i];
-      tallies[i] = args.skinModel == "table" ? tableTally(skin::SkinWalk(walked, planned.walk), args)
+      tallies[i] = args.skinModel == skin::SkinMode::Table ? tableTally(skin::SkinWalk(walked, planned.walk), args)
                                              : skin::simulateSkin(walked, planned);
       progress.advance();
     });
@@ -199,10 +201,9 @@ void registerSpectrumCommand(CLI::App& app) {
   command->add_option("--out", args->out, "CSV file to write")->required();
   command->add_option("--plot", args->plot, "PNG plot to write");
   command->add_option("--measured", args->measured, "FILE:COLUMN of a measured curve to compare with (RMS printed)");
-  command->add_option("--skin-model", args->skinModel,
+  addEnumOption(*command, "--skin-model", args->skinModel, skin::kSkinModeNames,
                       "walk (exact HyLIoS walk per ray) or table (rays sampled from exit tables cached in "
-                      "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)")
-      ->check(CLI::IsMember({"walk", "table"}));
+                      "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)");
   addEstimatorOption(*command, args->estimator);
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   command->add_option("--epsilon", args->effectTolerance,

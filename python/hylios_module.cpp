@@ -59,6 +59,7 @@
 #include "skin/specimen.h"
 #include "skin/specimen_fit.h"
 #include "skin/specimen_writer.h"
+#include "skin/skin_mode.h"
 
 namespace py = pybind11;
 
@@ -613,7 +614,7 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
   settings.height = height;
   settings.seed = seed;
   settings.threads = threads;
-  settings.skinMode = skinMode;
+  if (skinMode) settings.skinMode = parseEnum(*skinMode, skin::kSkinModeNames, "skin_model");
   settings.effectTolerance = epsilon;
   if (noiseTarget && !kRenderHasNoiseTarget)
     throw py::value_error("noise_target: this renderer has no noise target");  // the Python layer says more

@@ -18,6 +18,7 @@
 #include "skin/effect_plan.h"
 #include "skin/estimator.h"
 #include "skin/specimen.h"
+#include "skin/skin_mode.h"
 
 namespace hylios {
 
@@ -133,7 +134,7 @@ struct ShapeDesc {
 struct IntegratorDesc {
   int maxDepth = 8;
   std::uint64_t seed = 1;
-  std::string skinMode = "walk";       ///< "walk" (exact HyLIoS walk at every hit) or "table" (issue 5)
+  skin::SkinMode skinMode = skin::SkinMode::Walk;  ///< exact walk at every hit, or exit tables (issue 5)
   double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner (skin/effect_plan.h)
   /// spectral: a camera path carries every channel of a band (hero wavelengths) and skin hits run
   /// the spectral walk; per-wavelength: one channel per path and the analog walk (the reference).

@@ -19,6 +19,24 @@
 #include "skin/core/toml_location.h"
 
 namespace hylios {
+
+const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
+  static const std::map<std::string, std::vector<std::string>> keys = {
+      {"camera", {"position", "look_at", "up", "fov_deg", "aperture_radius", "focus_distance"}},
+      {"film", {"resolution", "spp", "exposure", "band"}},
+      {"film.band", {"name", "wavelength_nm", "preview_range", "range_nm", "step_nm"}},
+      {"integrator", {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target"}},
+      {"light", {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg", "shape"}},
+      {"material", {"name", "type", "specimen", "overrides", "freckles", "melanin_map", "water_reduction_percent", "reflectance", "refractive_index", "roughness"}},
+      {"material.freckles", {"density_per_cm2", "radius_cm", "melanin_gain", "seed"}},
+      {"material.melanin_map", {"file", "min_multiplier", "max_multiplier"}},
+      {"shape", {"name", "type", "material", "file", "smooth_normals", "transform", "centre", "radius", "point", "normal", "size"}},
+      {"shape.transform", {"translate", "rotate_deg", "scale"}},
+      {"top level", {"unit_cm", "camera", "film", "light", "material", "shape", "integrator"}},
+  };
+  return keys;
+}
+
 namespace {
 
 using Reader = TomlTableReader;
@@ -79,7 +97,7 @@ SourceLocation nameLocation(const toml::table& t, const TomlSource& src) {
 
 CameraDesc readCamera(const toml::table& t, const TomlSource& src) {
   Reader r(t, "[camera]", src,
-           {"position", "look_at", "up", "fov_deg", "aperture_radius", "focus_distance"});
+           sceneFileKeys().at("camera"));
   CameraDesc c;
   c.where = r.where();
   c.position = r.vec3("position");
@@ -107,7 +125,7 @@ bool isChannelName(const std::string& name) {
 
 BandDesc readBand(const toml::table& t, int index, const TomlSource& src) {
   Reader r(t, fmt::format("[[film.band]] #{}", index), src,
-           {"name", "wavelength_nm", "preview_range", "range_nm", "step_nm"});
+           sceneFileKeys().at("film.band"));
   BandDesc b;
   b.where = r.where();
   b.name = r.string("name");
@@ -166,7 +184,7 @@ void checkDistinctChannels(const FilmDesc& film) {
 }
 
 FilmDesc readFilm(const toml::table& t, const TomlSource& src) {
-  Reader r(t, "[film]", src, {"resolution", "spp", "exposure", "band"});
+  Reader r(t, "[film]", src, sceneFileKeys().at("film"));
   FilmDesc f;
   f.where = r.where();
   const toml::node* res = r.node("resolution");
@@ -202,12 +220,13 @@ FilmDesc readFilm(const toml::table& t, const TomlSource& src) {
 IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
   IntegratorDesc d;
   if (!t) return d;
-  Reader r(*t, "[integrator]", src, {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target"});
+  Reader r(*t, "[integrator]", src, sceneFileKeys().at("integrator"));
   d.where = r.where();
   d.maxDepth = static_cast<int>(r.integer("max_depth", 1, 1024, d.maxDepth));
   d.seed =
       static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
-  if (r.has("skin_mode")) d.skinMode = r.choice("skin_mode", {"walk", "table"});
+  if (r.has("skin_mode"))
+    d.skinMode = *findEnum(r.choice("skin_mode", enumNameList(skin::kSkinModeNames)), skin::kSkinModeNames);
   d.effectTolerance = r.number("effect_tolerance", NumberRange::closed(0.0, 1.0), d.effectTolerance);
   if (r.has("estimator"))
     d.estimator = *skin::parseEstimator(r.choice("estimator", {"spectral", "per-wavelength"}));
@@ -222,7 +241,7 @@ LightDesc readLight(const toml::table& t, int index, const TomlSource& src,
                     const NameRegistry& shapes) {
   Reader r(
       t, fmt::format("[[light]] #{}", index), src,
-      {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg", "shape"});
+      sceneFileKeys().at("light"));
   LightDesc l;
   l.where = r.where();
   const std::string type = r.choice("type", {"point", "spot", "area", "environment"});
@@ -324,7 +343,7 @@ SkinMaterialDesc readSkin(Reader& r) {
   for (const auto& o : overrides) skin.overrides.push_back(o.value);
   if (const toml::table* t = r.table("freckles")) {
     Reader f(*t, r.label() + " freckles", r.source(),
-             {"density_per_cm2", "radius_cm", "melanin_gain", "seed"});
+             sceneFileKeys().at("material.freckles"));
     // Bounded (issue 13): a density of 1e300 per cm² would make the freckle field without end.
     skin.freckles.densityPerCm2 = f.number("density_per_cm2", NumberRange::closed(0, 1e4));
     skin.freckles.radiusCm = f.number("radius_cm", NumberRange::closed(1e-4, 10), 0.15);
@@ -335,7 +354,7 @@ SkinMaterialDesc readSkin(Reader& r) {
   }
   if (const toml::table* t = r.table("melanin_map")) {
     Reader m(*t, r.label() + " melanin_map", r.source(),
-             {"file", "min_multiplier", "max_multiplier"});
+             sceneFileKeys().at("material.melanin_map"));
     skin.melaninMap = m.existingFile("file");
     skin.melaninMapMin = m.number("min_multiplier", NumberRange::closed(0, 1e3));
     skin.melaninMapMax = m.number("max_multiplier", NumberRange::closed(0, 1e3));
@@ -348,8 +367,7 @@ SkinMaterialDesc readSkin(Reader& r) {
 
 MaterialDesc readMaterial(const toml::table& t, int index, const TomlSource& src) {
   Reader r(t, fmt::format("[[material]] #{}", index), src,
-           {"name", "type", "specimen", "overrides", "freckles", "melanin_map",
-            "water_reduction_percent", "reflectance", "refractive_index", "roughness"});
+           sceneFileKeys().at("material"));
   MaterialDesc m;
   m.where = r.where();
   m.name = r.string("name");
@@ -377,7 +395,7 @@ MaterialDesc readMaterial(const toml::table& t, int index, const TomlSource& src
 /// translate · Rz · Ry · Rx · scale: scale first, then rotate about x, y, z (fixed axes), then
 /// translate.
 glm::dmat4 readTransform(const toml::table& t, const std::string& label, const TomlSource& src) {
-  Reader r(t, label, src, {"translate", "rotate_deg", "scale"});
+  Reader r(t, label, src, sceneFileKeys().at("shape.transform"));
   const glm::dvec3 translate = r.vec3("translate", glm::dvec3(0));
   const glm::dvec3 rotateDeg = r.vec3("rotate_deg", glm::dvec3(0));
   glm::dvec3 scale(1);
@@ -398,8 +416,7 @@ glm::dmat4 readTransform(const toml::table& t, const std::string& label, const T
 ShapeDesc readShape(const toml::table& t, int index, const TomlSource& src,
                     const NameRegistry& materials) {
   Reader r(t, fmt::format("[[shape]] #{}", index), src,
-           {"name", "type", "material", "file", "smooth_normals", "transform", "centre", "radius",
-            "point", "normal", "size"});
+           sceneFileKeys().at("shape"));
   ShapeDesc s;
   s.where = r.where();
   s.name = r.string("name", "");
@@ -465,7 +482,7 @@ std::vector<LightDesc> readLights(Reader& root, const TomlSource& src, const Nam
 
 SceneDesc parseRoot(const toml::table& rootTable, const TomlSource& src) {
   Reader root(rootTable, "the top level", src,
-              {"unit_cm", "camera", "film", "light", "material", "shape", "integrator"});
+              sceneFileKeys().at("top level"));
   SceneDesc scene;
   scene.unitCm = root.number("unit_cm", NumberRange::closed(kMinUnitCm, kMaxUnitCm), 1.0);
   scene.camera = readCamera(requiredTable(root, "camera"), src);

@@ -4,7 +4,9 @@
 // file:line:col.
 #pragma once
 #include <filesystem>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "renderer/scene/scene.h"
 
@@ -19,5 +21,11 @@ SceneDesc loadSceneFile(const std::filesystem::path& path);
 /// `sourceName` appears in error locations; relative paths resolve against `baseDir`.
 SceneDesc parseSceneText(const std::string& tomlText, const std::string& sourceName,
                          const std::filesystem::path& baseDir);
+
+/// The keys the parser accepts, per table: "top level", "camera", "film", "film.band", "light",
+/// "material" (+ "material.freckles", "material.melanin_map"), "shape" (+ "shape.transform"),
+/// "integrator". docs/scene-format.md documents the same keys
+/// (tests/renderer/scene_format_doc_test.cpp checks both ways).
+const std::map<std::string, std::vector<std::string>>& sceneFileKeys();
 
 }  // namespace hylios

@@ -68,7 +68,7 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
   for (const auto& m : scene.materials) anySkin = anySkin || m.kind == MaterialDesc::Kind::Skin;
   std::unique_ptr<skin::SpectralDatabase> spectra;
   if (anySkin) spectra = std::make_unique<skin::SpectralDatabase>(skin::SpectralDatabase::load(spectraDir()));
-  spectral_ = scene.integrator.estimator == skin::Estimator::Spectral && scene.integrator.skinMode != "table";
+  spectral_ = scene.integrator.estimator == skin::Estimator::Spectral && scene.integrator.skinMode != skin::SkinMode::Table;
   std::vector<std::vector<std::size_t>> bundles;  // the film's bands, as channel lists
   if (spectral_) {
     const Film layout(scene.film);

@@ -51,7 +51,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   result.film = std::make_unique<Film>(scene.film);
   std::vector<double> wavelengths;
   for (const FilmChannel& c : result.film->channels()) wavelengths.push_back(c.wavelengthNm);
-  const bool tableMode = scene.integrator.skinMode == "table";
+  const bool tableMode = scene.integrator.skinMode == skin::SkinMode::Table;
   const std::size_t loadedBefore = tableMode ? ExitTableCache::shared().loaded() : 0;
   const std::size_t builtBefore = tableMode ? ExitTableCache::shared().built() : 0;
   const Integrator integrator(scene, wavelengths);

@@ -26,7 +26,7 @@ struct RenderSettings {
   std::optional<std::uint64_t> seed;
   int threads = 0;          ///< 0: all cores
   RenderProgressFactory progress;  ///< empty: no progress display
-  std::optional<std::string> skinMode;     ///< "walk" or "table" (the scene's when unset)
+  std::optional<skin::SkinMode> skinMode;  ///< the scene's when unset
   std::optional<double> effectTolerance;   ///< ε of the effect planner (the scene's when unset)
   bool explain = false;                    ///< print the effect plans before rendering
   std::optional<skin::Estimator> estimator;  ///< the scene's when unset

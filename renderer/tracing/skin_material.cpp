@@ -62,7 +62,7 @@ skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesys
 
 SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex,
                            double unitCm, const std::vector<double>& channelWavelengths,
-                           const skin::SpectralDatabase& spectra, const std::string& skinMode,
+                           const skin::SpectralDatabase& spectra, skin::SkinMode skinMode,
                            double effectTolerance, const std::vector<std::vector<std::size_t>>& bundles)
     : materialIndex_(materialIndex), unitCm_(unitCm), aspectRatio_(specimen.surfaceFoldAspectRatio),
       freckles_(desc.skin.freckles, desc.where) {
@@ -76,9 +76,7 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
     throw SceneError(desc.where, "melanin map multipliers must be finite and >= 0");
   const double lo = std::min(mapMin_, mapMax_) * freckles_.minMultiplier();
   const double hi = std::max(mapMin_, mapMax_) * freckles_.maxMultiplier();
-  if (skinMode != "walk" && skinMode != "table")
-    throw SceneError(desc.where, "skin mode must be \"walk\" or \"table\", got \"" + skinMode + "\"");
-  const bool tableMode = skinMode == "table";
+  const bool tableMode = skinMode == skin::SkinMode::Table;
   walks_ = std::make_unique<SkinWalkCache>(specimen, lo, hi, channelWavelengths, spectra, desc.where,
                                            tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
                                            effectTolerance, tableMode ? std::vector<std::vector<std::size_t>>{} : bundles);

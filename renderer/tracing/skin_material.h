@@ -63,6 +63,7 @@
 #include "renderer/scene/texture_map.h"
 #include "skin/core/random.h"
 #include "skin/spectral_database.h"
+#include "skin/skin_mode.h"
 
 namespace hylios {
 
@@ -84,11 +85,11 @@ class SkinMaterial {
  public:
   /// `specimen` already has the material's overrides applied; `materialIndex` is this material's
   /// index in SceneDesc::materials (exit points must land on shapes of this material).
-  /// skinMode "table" samples exit tables (skin/exit_table.h, from ExitTableCache::shared(), with
-  /// SkinTableCache::kTableMelaninLevels levels) instead of walking; "walk" runs the exact walk.
+  /// SkinMode::Table samples exit tables (skin/exit_table.h, from ExitTableCache::shared(), with
+  /// SkinTableCache::kTableMelaninLevels levels) instead of walking; Walk runs the exact walk.
   SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex, double unitCm,
                const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
-               const std::string& skinMode = "walk",
+               skin::SkinMode skinMode = skin::SkinMode::Walk,
                double effectTolerance = skin::kDefaultEffectTolerance,  ///< ε, skin/effect_plan.h
                const std::vector<std::vector<std::size_t>>& bundles = {});
 

@@ -13,21 +13,15 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "tests/support/scratch_csv.h"
 #include "skin/absorber.h"
 #include "skin/layer.h"
 
 namespace hylios {
 namespace {
 
-struct ScratchFolder {
-  std::filesystem::path path = std::filesystem::temp_directory_path() /
-                               ("hylios-coefficients-test-" + std::to_string(::getpid()));
-  ScratchFolder() { std::filesystem::create_directories(path); }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
+using test::readCsv;
+using test::ScratchFolder;
 
 void runCommand(const std::string& arguments) {
   CLI::App app;
@@ -35,24 +29,10 @@ void runCommand(const std::string& arguments) {
   app.parse("coefficients " + arguments, false);
 }
 
-std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> fields;
-    std::stringstream stream(line);
-    std::string field;
-    while (std::getline(stream, field, ',')) fields.push_back(field);
-    rows.push_back(fields);
-  }
-  return rows;
-}
-
 constexpr std::size_t kColumns = 6 + skin::kAbsorberCount;
 
 TEST(CoefficientsCommand, HeaderNamesEveryColumn) {
-  ScratchFolder scratch;
+  ScratchFolder scratch("coefficients-test");
   runCommand("--specimen S1 --wavelengths 500 --out " + (scratch.path / "c.csv").string());
   const auto rows = readCsv(scratch.path / "c.csv");
   ASSERT_EQ(rows.size(), 1 + skin::kLayerCount);
@@ -65,7 +45,7 @@ TEST(CoefficientsCommand, HeaderNamesEveryColumn) {
 }
 
 TEST(CoefficientsCommand, NoGapNoNanOver250To2500nmForEverySpecimen) {
-  ScratchFolder scratch;
+  ScratchFolder scratch("coefficients-test");
   for (const char* name : {"S1", "S2", "S3", "S4"}) {
     const auto csv = scratch.path / (std::string(name) + ".csv");
     runCommand(std::string("--specimen ") + name + " --wavelengths 250:2500:5 --out " +
@@ -95,7 +75,7 @@ TEST(CoefficientsCommand, NoGapNoNanOver250To2500nmForEverySpecimen) {
 }
 
 TEST(CoefficientsCommand, SetOverridesReachTheSpecimen) {
-  ScratchFolder scratch;
+  ScratchFolder scratch("coefficients-test");
   const auto plain = scratch.path / "plain.csv";
   const auto more = scratch.path / "more.csv";
   runCommand("--specimen S2 --wavelengths 500 --out " + plain.string());
@@ -111,7 +91,7 @@ TEST(CoefficientsCommand, SetOverridesReachTheSpecimen) {
 }
 
 TEST(CoefficientsCommand, BadInputsSayWhatIsWrong) {
-  ScratchFolder scratch;
+  ScratchFolder scratch("coefficients-test");
   const std::string out = " --out " + (scratch.path / "x.csv").string();
   const auto message = [&](const std::string& args) {
     try {
@@ -134,7 +114,7 @@ TEST(CoefficientsCommand, BadInputsSayWhatIsWrong) {
 
 TEST(CoefficientsCommand, WritesAPngPlot) {
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
-  ScratchFolder scratch;
+  ScratchFolder scratch("coefficients-test");
   const auto png = scratch.path / "c.png";
   runCommand("--specimen S4 --wavelengths 250:2500:10 --out " + (scratch.path / "c.csv").string() +
              " --plot " + png.string());

@@ -17,7 +17,7 @@ using namespace hylios;
 namespace {
 
 /// Per-pixel values of channel 0 after rendering `scene` in `mode` with `seed`.
-std::vector<double> render(SceneDesc scene, const std::string& mode, std::uint64_t seed) {
+std::vector<double> render(SceneDesc scene, skin::SkinMode mode, std::uint64_t seed) {
   scene.integrator.skinMode = mode;
   scene.integrator.seed = seed;
   Film film(scene.film);
@@ -25,7 +25,7 @@ std::vector<double> render(SceneDesc scene, const std::string& mode, std::uint64
   for (const FilmChannel& c : film.channels()) wavelengths.push_back(c.wavelengthNm);
   const Integrator integrator(scene, wavelengths);
   RenderOptions options;
-  options.label = mode;
+  options.label = std::string(enumName(mode, skin::kSkinModeNames));
   integrator.render(film, options);
   std::vector<double> values;
   for (int y = 0; y < film.height(); ++y)
@@ -64,7 +64,8 @@ TEST(SkinTableRender, TableModeAgreesWithWalkMode) {
   setenv("HYLIOS_CACHE_DIR", (std::string(HYLIOS_BINARY_DIR) + "/skin_table_render_test_cache").c_str(), 1);
   SceneDesc scene = loadSceneFile(std::string(HYLIOS_SOURCE_DIR) + "/scenes/test/skin_sphere_550.toml");
   scene.film.samplesPerPixel = 16;
-  const std::vector<double> walk = render(scene, "walk", 11), table = render(scene, "table", 12);
+  const std::vector<double> walk = render(scene, skin::SkinMode::Walk, 11),
+                            table = render(scene, skin::SkinMode::Table, 12);
   const int w = scene.film.width, h = scene.film.height;
   double relative = 0;
   const double whole = meanDifferenceZ(table, walk, 0, static_cast<std::size_t>(w), static_cast<std::size_t>(h), w, &relative);

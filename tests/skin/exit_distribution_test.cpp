@@ -12,6 +12,7 @@
 #include "skin/fresnel.h"
 #include "skin/skin_simulation.h"
 #include "skin/core/constants.h"
+#include "tests/support/clear_optics.h"
 
 using hylios::kPi;
 
@@ -20,18 +21,7 @@ using namespace hylios::skin;
 namespace {
 
 
-/// Every layer clear with index n, each `thicknessCm` thick.
-SkinOptics clearOptics(double n, double thicknessCm = 0.01) {
-  SkinOptics optics;
-  optics.wavelengthNm = 500;
-  optics.surfaceAspectRatio = 0.1;
-  optics.melaninRefractiveIndex = 1.7;
-  for (auto& layer : optics.layers) {
-    layer.thicknessCm = thicknessCm;
-    layer.refractiveIndex = n;
-  }
-  return optics;
-}
+using hylios::test::clearOptics;
 
 WalkRunOptions smoothRun(double angleDeg, std::uint64_t rays) {
   WalkRunOptions run;

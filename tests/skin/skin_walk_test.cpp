@@ -13,6 +13,7 @@
 #include "skin/spheroid_intersection.h"
 #include "skin/core/constants.h"
 #include "skin/core/thread_limit.h"
+#include "tests/support/clear_optics.h"
 
 using hylios::kPi;
 
@@ -20,18 +21,7 @@ using namespace hylios::skin;
 
 namespace {
 
-/// Optics with every layer `thicknessCm` thick, index n, nothing absorbing or scattering.
-SkinOptics clearOptics(double n, double thicknessCm = 0.01) {
-  SkinOptics optics;
-  optics.wavelengthNm = 500;
-  optics.surfaceAspectRatio = 0.1;
-  optics.melaninRefractiveIndex = 1.7;
-  for (auto& layer : optics.layers) {
-    layer.thicknessCm = thicknessCm;
-    layer.refractiveIndex = n;
-  }
-  return optics;
-}
+using hylios::test::clearOptics;
 
 SkinTally run(const SkinOptics& optics, WalkOptions walk, double angleDeg, std::uint64_t rays) {
   WalkRunOptions options;

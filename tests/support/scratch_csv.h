@@ -1,9 +1,11 @@
-// Test support for the command tests: a scratch folder removed afterwards, a CSV reader, and a
-// runner that parses one command line with a command registered on a fresh CLI11 app.
+// Test support for the command tests: a scratch folder removed afterwards, a CSV reader, a
+// runner that parses one command line with a command registered on a fresh CLI11 app, and a check
+// that a command fails with a message naming the problem.
 #pragma once
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <gtest/gtest.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -53,6 +55,17 @@ inline std::size_t columnOf(const std::vector<std::string>& header, const std::s
   for (std::size_t i = 0; i < header.size(); ++i)
     if (header[i] == name) return i;
   return header.size();
+}
+
+/// Expects run() to throw an E whose message contains `needle`.
+template <typename E = std::exception, typename Run>
+void expectThrowMentioning(const Run& run, const std::string& needle) {
+  try {
+    run();
+    ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'";
+  } catch (const E& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace hylios::test
