@@ -104,11 +104,20 @@ void runRender(const RenderArguments& args, const CLI::App& command) {
   } else {
     for (const auto& path : writeFilmOutputs(*result.film, args.out, attributes))
       std::cout << "wrote " << path.string() << "\n";
-    writeRenderCheckpoint(checkpoint, identity, *result.film);
-    std::cout << "wrote " << checkpoint.string() << "\n";
-    std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal) << " at " << done << "/"
-              << scene.film.samplesPerPixel << " spp; " << args.out << " holds the samples so far. Continue with the "
-              << "same command and --resume.\n";
+    // A device or FIFO --out (/dev/null) keeps nothing to resume from: no checkpoint beside it.
+    std::error_code noStatus;
+    const std::filesystem::file_status outStatus = std::filesystem::status(args.out, noStatus);
+    if (std::filesystem::exists(outStatus) && !std::filesystem::is_regular_file(outStatus)) {
+      std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal) << " at " << done
+                << "/" << scene.film.samplesPerPixel << " spp; no checkpoint, since " << args.out
+                << " is not a regular file\n";
+    } else {
+      writeRenderCheckpoint(checkpoint, identity, *result.film);
+      std::cout << "wrote " << checkpoint.string() << "\n";
+      std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal) << " at " << done
+                << "/" << scene.film.samplesPerPixel << " spp; " << args.out << " holds the samples so far. Continue "
+                << "with the same command and --resume.\n";
+    }
   }
   std::cout << std::flush;
   throw CLI::RuntimeError(InterruptSignalScope::exitStatusFor(signal));
