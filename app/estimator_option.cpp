@@ -24,6 +24,7 @@ std::vector<skin::SkinTally> simulateWithEstimator(const std::string& estimator,
     spectral.seed = run.seed;
     spectral.walk = run.walk;
     spectral.walk.tabulatedMelanosomes = true;
+    spectral.walk.splitEntryReflection = true;  // surface reflection as an expected value
     spectral.tally = run.tally;
     return skin::simulateSkinSpectral(optics, spectral);
   }

@@ -161,6 +161,7 @@ void runSpectrum(const SpectrumArguments& args) {
     spectral.rays = args.rays;
     spectral.seed = args.seed;
     spectral.walk.tabulatedMelanosomes = true;
+    spectral.walk.splitEntryReflection = true;  // surface reflection as an expected value
     tallies = skin::simulateSkinSpectral(optics, spectral);
     progress.advance(wavelengths.size());
   } else {
@@ -207,8 +208,9 @@ void registerSpectrumCommand(CLI::App& app) {
   addEstimatorOption(*command, args->estimator);
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   command->add_option("--epsilon", args->effectTolerance,
-                      "Effect-planner tolerance: processes whose summed optical depth stays below it are skipped, "
-                      "bounding the change of R by it (0 = simulate everything; default 1e-3)")
+                      "Effect-planner tolerance (per-wavelength estimator and table mode): processes whose summed "
+                      "optical depth stays below it are skipped, bounding the change of R by it (0 = simulate "
+                      "everything; default 1e-3)")
       ->check(finiteRange(0.0, 1.0));
   command->add_flag("--explain", args->explain,
                     "Print each wavelength's effect plan (process, layer, optical depth, kept or skipped; "

@@ -241,6 +241,7 @@ std::vector<skin::SkinTally> simulateTallies(const std::string& estimator, const
     spectral.seed = run.seed;
     spectral.walk = run.walk;
     spectral.walk.tabulatedMelanosomes = true;
+    spectral.walk.splitEntryReflection = true;  // surface reflection as an expected value
     spectral.tally = run.tally;
     const auto bundles = skin::groupIntoBundles(optics, spectral.walk, spectral.bundles);
     tbb::parallel_for(std::size_t{0}, bundles.size(), [&](std::size_t b) {

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <string>
 
+#include "app/estimator_option.h"
 #include "app/commands.h"
 #include "renderer/scene/data_paths.h"
 #include "tests/support/scratch_csv.h"
@@ -56,14 +57,15 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
     solidAngle += std::stod(rows[r][omega]);
   }
   EXPECT_NEAR(solidAngle, 2 * kPi, 1e-4);  // printed with 6 significant digits
-  // The same walk through the library (same seed, same wavelength stream).
+  // The same walk through the library: the default spectral estimator (same seed, same stream).
   const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   skin::WalkRunOptions run;
   run.incidenceDeg = 45;
   run.rays = 3000;
   run.seed = 5;
-  const skin::SkinTally tally = skin::simulateSkin(skin::computeSkinOptics(specimen, spectra, 550), run);
+  const skin::SkinTally tally =
+      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run).front();
   EXPECT_NEAR(reflectance, tally.reflectance().mean, 1e-5);
   EXPECT_NEAR(surfaceReflectance, tally.surfaceReflectance().mean, 1e-5);
   EXPECT_GT(std::filesystem::file_size(png), 1000u);

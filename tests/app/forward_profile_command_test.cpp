@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "app/estimator_option.h"
 #include "app/commands.h"
 #include "renderer/scene/data_paths.h"
 #include "tests/support/scratch_csv.h"
@@ -52,7 +53,7 @@ TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
   run.seed = 3;
   run.walk.deepestLayer = skin::Layer::StratumBasale;
   run.walk.belowRefractiveIndex = optics[skin::Layer::StratumBasale].refractiveIndex;
-  const skin::SkinTally tally = skin::simulateSkin(optics, run);
+  const skin::SkinTally tally = simulateWithEstimator("spectral", {optics}, run).front();
   EXPECT_NEAR(transmitted, tally.transmittance().mean, 1e-5);
   EXPECT_GT(tally.transmittance().mean, 0.1);  // 400 nm: a thin epidermis lets much through
   EXPECT_GT(std::filesystem::file_size(png), 1000u);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "app/estimator_option.h"
 #include "app/commands.h"
 #include "renderer/scene/data_paths.h"
 #include "tests/support/scratch_csv.h"
@@ -51,7 +52,8 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
   skin::WalkRunOptions run;
   run.rays = 3000;
   run.seed = 2;
-  const skin::SkinTally tally = skin::simulateSkin(skin::computeSkinOptics(specimen, spectra, 550), run);
+  const skin::SkinTally tally =
+      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run).front();
   // Exits beyond 2 cm from the entry point are rare but possible: the annuli hold at most R_d.
   EXPECT_LE(subsurface, tally.subsurfaceReflectance().mean + 1e-5);
   EXPECT_GT(subsurface, tally.subsurfaceReflectance().mean - 0.01);
