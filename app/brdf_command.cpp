@@ -23,12 +23,13 @@
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
 #include "skin/core/thread_limit.h"
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
 
 constexpr const char* kVisibleWavelengths = "380:780:10";
-constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+constexpr double kDegPerRad = 180.0 / kPi;
 
 struct BrdfArguments {
   SpecimenOptions specimen;

@@ -23,11 +23,12 @@
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
 #include "skin/core/thread_limit.h"
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
 
-constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
+constexpr double kRadPerDeg = kPi / 180.0;
 
 struct ForwardProfileArguments {
   SpecimenOptions specimen;

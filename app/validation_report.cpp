@@ -17,11 +17,11 @@
 #include "skin/specimen_fit.h"
 #include "skin/specimen_writer.h"
 #include "skin/spectral_simulation.h"
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::string fmt(const char* format, double v) {
   char buffer[64];

@@ -60,6 +60,7 @@
 #include "skin/specimen_fit.h"
 #include "skin/specimen_writer.h"
 #include "skin/skin_mode.h"
+#include "skin/core/constants.h"
 
 namespace py = pybind11;
 
@@ -437,7 +438,7 @@ py::dict coefficients(const PySpecimen& s, const std::string& wavelengthText) {
 // ---------------------------------------------------------------------------------------------
 // brdf (app/brdf_command.cpp).
 
-constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+constexpr double kDegPerRad = 180.0 / kPi;
 
 py::dict directions(const skin::ReflectedDirections& r, std::size_t polar, std::size_t azimuth) {
   py::dict d;

@@ -1,11 +1,11 @@
 #include "skin/skin_tally.h"
+#include "skin/core/constants.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace hylios::skin {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 SkinTally::SkinTally(const TallyOptions& options) : options_(options) {

@@ -6,10 +6,10 @@
 
 #include "skin/sampling/exponential_polar_sampling.h"
 #include "skin/sampling/surface_normal_sampling.h"
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 /// Above this θo the Gamma(2) proposal's acceptance falls below 0.8: use the inversion sampler.
 constexpr double kLargestRejectionMeanAngleRad = 0.5;
 }  // namespace

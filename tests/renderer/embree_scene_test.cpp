@@ -12,6 +12,9 @@
 #include "renderer/tracing/camera.h"
 #include "renderer/scene/triangle_mesh.h"
 #include "skin/core/random.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 using namespace hylios;
 
@@ -154,7 +157,7 @@ TEST(EmbreeScene, AnalyticSphereHitsInDoublePrecisionFromOutsideAndInside) {
   EXPECT_NEAR(inside->geometricNormal.x, 1, 1e-12);  // outward even from inside
   EXPECT_TRUE(geometry.occluded({{1, 2, 10}, {0, 0, -1}, 7}));
   EXPECT_FALSE(geometry.occluded({{1, 2, 10}, {0, 0, -1}, 6}));
-  EXPECT_NEAR(geometry.shapeArea(0), 3.14159265358979 * 1.0, 1e-12);
+  EXPECT_NEAR(geometry.shapeArea(0), kPi * 1.0, 1e-12);
 }
 
 TEST(EmbreeScene, SphereTransformMustBeSimilarity) {
@@ -206,9 +209,9 @@ TEST(Camera, CentreRayLooksAtTheTargetAndEdgesSpanTheFieldOfView) {
   const Ray centre = camera.generateRay(100, 50, 0.5, 0.5);
   EXPECT_NEAR(centre.direction.z, -1, 1e-12);
   const Ray top = camera.generateRay(100, 0, 0.5, 0.5);  // image row 0 is the top
-  EXPECT_NEAR(std::atan2(top.direction.y, -top.direction.z), 30 * 3.14159265358979 / 180, 1e-12);
+  EXPECT_NEAR(std::atan2(top.direction.y, -top.direction.z), 30 * kPi / 180, 1e-12);
   const Ray right = camera.generateRay(200, 50, 0.5, 0.5);
-  EXPECT_NEAR(right.direction.x / -right.direction.z, 2 * std::tan(30 * 3.14159265358979 / 180), 1e-12);
+  EXPECT_NEAR(right.direction.x / -right.direction.z, 2 * std::tan(30 * kPi / 180), 1e-12);
   desc.lookAt = desc.position;
   EXPECT_THROW(Camera(desc, 10, 10), SceneError);
 }

@@ -9,6 +9,9 @@
 
 #include "skin/core/random.h"
 #include "skin/sampling/rayleigh_sampling.h"
+#include "skin/core/constants.h"
+
+using hylios::kPi;
 
 namespace hylios::test {
 namespace {
@@ -28,13 +31,13 @@ TEST(Chi2Helper, PValuesMatchTabulatedQuantiles) {
 }
 
 TEST(Chi2Helper, IntegratesClosedForms) {
-  EXPECT_NEAR(integrate([](double x) { return std::sin(x); }, 0.0, 3.14159265358979323846), 2.0,
+  EXPECT_NEAR(integrate([](double x) { return std::sin(x); }, 0.0, kPi), 2.0,
               1e-11);
   // A peak of width 1e-4 between the first nodes is still found: ∫ of a normalised Lorentzian.
   const double w = 1e-4;
-  const auto lorentz = [w](double x) { return w / (3.14159265358979323846 * (x * x + w * w)); };
+  const auto lorentz = [w](double x) { return w / (kPi * (x * x + w * w)); };
   EXPECT_NEAR(integrate(lorentz, -0.3, 0.7), (std::atan(0.7 / w) + std::atan(0.3 / w)) /
-                                                 3.14159265358979323846, 1e-9);
+                                                 kPi, 1e-9);
 }
 
 TEST(Chi2Helper, PoolsSmallBinsAndFlagsImpossibleSamples) {

@@ -1,15 +1,18 @@
 // θo(λ) of Algorithm 2 (Sec. 4.2.2): 5° to 780 nm, linear to 0 at 1400 nm, 0 beyond.
 #include "skin/melanosome_scattering_angle.h"
+#include "skin/core/constants.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
+using hylios::kPi;
+
 namespace hylios::skin {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = kPi / 180.0;
 
 TEST(MelanosomeScatteringAngle, FiveDegreesThroughTheVisible) {
   EXPECT_DOUBLE_EQ(melanosomeMeanScatteringAngleRad(250.0), 5.0 * kDeg);
