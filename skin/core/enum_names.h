@@ -32,7 +32,7 @@ std::optional<E> findEnum(std::string_view text, const EnumNames<E, N>& names) {
   return std::nullopt;
 }
 
-/// The names in table order ("walk", "table"), e.g. for CLI::IsMember or a TOML choice.
+/// The names in table order ("walk", "table"), e.g. for a command-line check or a TOML choice.
 template <typename E, std::size_t N>
 std::vector<std::string> enumNameList(const EnumNames<E, N>& names) {
   std::vector<std::string> list;
