@@ -24,7 +24,7 @@ struct SlabOptions {
   double nAbove = 1.0, nBelow = 1.0, angleDeg = 0.0;
   std::vector<std::string> layers;
   std::uint64_t rays = 1000000, seed = 1;
-  std::string out, scheme = "analog";
+  std::string out, scheme = "weighted";
   bool diffuse = false;
   int threads = 0;
 };
@@ -95,7 +95,9 @@ void registerSlabCommand(CLI::App& app) {
   sub->add_option("--seed", options->seed, "random seed in [0, 2^63-1]")
       ->check(seedRange())
       ->capture_default_str();
-  sub->add_option("--scheme", options->scheme, "absorption scoring")
+  sub->add_option("--scheme", options->scheme,
+                  "absorption scoring: weighted (default; absorption as weight, MCML's implicit capture with "
+                  "roulette) or analog (the packet dies where it is absorbed)")
       ->check(CLI::IsMember({"analog", "weighted"}))
       ->capture_default_str();
   sub->add_option("--threads", options->threads, "worker threads (0: all cores)")

@@ -57,6 +57,7 @@ TEST(SlabCommandTest, WritesOneRowMatchingTheLibrary) {
   skin::SlabRunOptions options;
   options.photons = 5000;
   options.seed = 9;
+  options.scheme = skin::AbsorptionScheme::WeightWithRoulette;  // the command's default
   const skin::SlabResult r = skin::simulateLayeredSlab(problem, options);
   const double expected[] = {r.specularReflectance, r.diffuseReflectance.mean,
                              r.diffuseReflectance.standardError, r.transmittance.mean,
