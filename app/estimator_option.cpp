@@ -18,15 +18,7 @@ std::vector<skin::SkinTally> simulateWithEstimator(const std::string& estimator,
                                                    const std::vector<skin::SkinOptics>& optics,
                                                    const skin::WalkRunOptions& run) {
   if (estimator == "spectral") {
-    skin::SpectralRunOptions spectral;
-    spectral.incidenceDeg = run.incidenceDeg;
-    spectral.rays = run.rays;
-    spectral.seed = run.seed;
-    spectral.walk = run.walk;
-    spectral.walk.tabulatedMelanosomes = true;
-    spectral.walk.splitEntryReflection = true;  // surface reflection as an expected value
-    spectral.tally = run.tally;
-    return skin::simulateSkinSpectral(optics, spectral);
+    return skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
   }
   std::vector<skin::SkinTally> tallies(optics.size());
   tbb::parallel_for(std::size_t{0}, optics.size(), [&](std::size_t i) { tallies[i] = skin::simulateSkin(optics[i], run); });

@@ -154,15 +154,8 @@ void runSpectrum(const SpectrumArguments& args) {
   std::vector<std::optional<skin::EffectPlan>> plans(wavelengths.size());
   ProgressBar progress("spectrum " + specimen.name, wavelengths.size());
   if (args.estimator == "spectral" && args.skinModel == skin::SkinMode::Walk) {
-    // One path per bundle of wavelengths, the full model (no effect plan: bound 0), internal
-    // melanosome paths drawn from the 2¹⁸-path table (skin/spectral_walk.h).
-    skin::SpectralRunOptions spectral;
-    spectral.incidenceDeg = args.angleDeg;
-    spectral.rays = args.rays;
-    spectral.seed = args.seed;
-    spectral.walk.tabulatedMelanosomes = true;
-    spectral.walk.splitEntryReflection = true;  // surface reflection as an expected value
-    tallies = skin::simulateSkinSpectral(optics, spectral);
+    // One path per bundle of wavelengths, the full model (no effect plan: bound 0).
+    tallies = skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
     progress.advance(wavelengths.size());
   } else {
     tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {

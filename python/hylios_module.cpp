@@ -236,14 +236,7 @@ std::vector<skin::SkinTally> simulateTallies(const std::string& estimator, const
                                              ProgressBar* bar = nullptr) {
   std::vector<skin::SkinTally> tallies(optics.size(), skin::SkinTally(run.tally));
   if (estimator == "spectral") {
-    skin::SpectralRunOptions spectral;
-    spectral.incidenceDeg = run.incidenceDeg;
-    spectral.rays = run.rays;
-    spectral.seed = run.seed;
-    spectral.walk = run.walk;
-    spectral.walk.tabulatedMelanosomes = true;
-    spectral.walk.splitEntryReflection = true;  // surface reflection as an expected value
-    spectral.tally = run.tally;
+    const skin::SpectralRunOptions spectral = skin::commandSpectralRun(run);
     const auto bundles = skin::groupIntoBundles(optics, spectral.walk, spectral.bundles);
     tbb::parallel_for(std::size_t{0}, bundles.size(), [&](std::size_t b) {
       if (stop()) return;

@@ -40,6 +40,18 @@ void recordPath(const SpectralPath& path, std::vector<SkinTally*>& tallies) {
 }
 }  // namespace
 
+SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
+  SpectralRunOptions spectral;
+  spectral.incidenceDeg = run.incidenceDeg;
+  spectral.rays = run.rays;
+  spectral.seed = run.seed;
+  spectral.walk = run.walk;
+  spectral.walk.tabulatedMelanosomes = true;
+  spectral.walk.splitEntryReflection = true;
+  spectral.tally = run.tally;
+  return spectral;
+}
+
 std::uint64_t bundleStream(const std::vector<double>& wavelengthsNm) {
   std::uint64_t stream = 0x6a09e667f3bcc909ULL;
   for (double w : wavelengthsNm) stream = mix64(stream ^ wavelengthStream(w));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "skin/core/constants.h"
 #include "skin/fresnel.h"
 #include "skin/interface_crossing.h"
 #include "skin/melanosome_interaction.h"
@@ -35,7 +36,7 @@ void requireShared(bool same, const std::string& what) {
 double logAngleNormalisation(double meanAngleRad) {
   if (meanAngleRad == 0) return 0;
   const double t2 = meanAngleRad * meanAngleRad;
-  return std::log1p(t2) - std::log(t2) - std::log1p(std::exp(-3.14159265358979323846 / meanAngleRad));
+  return std::log1p(t2) - std::log(t2) - std::log1p(std::exp(-kPi / meanAngleRad));
 }
 
 std::string layerText(Layer layer) { return std::string(layerName(layer)); }
