@@ -385,9 +385,24 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   RenderStats total;
   int passSamples = options.samplesPerPass > 0 ? options.samplesPerPass : 1;
   const int doneAtStart = done;
+  // With a noise target the film's estimate is taken at sample counts that depend only on the
+  // film (never on timing), so a render stops at the same spp on any machine: first at
+  // kMinNoiseSamples, then at done × (noise/target)² × 1.1, at least ×1.25 and at most ×4.
+  int nextCheck = std::max(kMinNoiseSamples, done);
+  auto targetReached = [&] {
+    total.noise = filmNoise(film);
+    const double ratio = worstNoise(total.noise) / *options.noiseTarget;
+    if (ratio <= 1) return total.noiseTargetReached = true;
+    const double growth = std::clamp(ratio * ratio * 1.1, 1.25, 4.0);
+    nextCheck = static_cast<int>(std::min<double>(spp, std::ceil(done * growth)));
+    nextCheck = std::max(nextCheck, done + 1);
+    return false;
+  };
   while (done < spp) {
     if (options.stopRequested && options.stopRequested()) break;
-    const int end = spp - done > passSamples ? done + passSamples : spp;
+    if (options.noiseTarget && done >= nextCheck && targetReached()) break;
+    int end = spp - done > passSamples ? done + passSamples : spp;
+    if (options.noiseTarget) end = std::min(end, nextCheck);
     const auto start = std::chrono::steady_clock::now();
     // The first pass of a call may be long (a big film, a slow walk) and nothing of it could be
     // saved anyway: a stop request abandons it between tiles (issue 13, row 8). Later passes are
@@ -400,13 +415,7 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
     done = end;
     film.setSamplesPerPixelDone(done);
     if (options.onPassDone) options.onPassDone(done, seconds);
-    if (options.noiseTarget && done >= kMinNoiseSamples) {
-      total.noise = filmNoise(film);
-      if (worstNoise(total.noise) <= *options.noiseTarget) {
-        total.noiseTargetReached = true;
-        break;
-      }
-    }
+    if (options.noiseTarget && done >= nextCheck && targetReached()) break;
     if (options.samplesPerPass == 0 && seconds < kAdaptivePassSeconds && passSamples < (1 << 24)) {
       // Aim the next pass at kAdaptivePassSeconds, growing at most 8-fold (the first passes warm up).
       const double factor = std::min(8.0, std::round(kAdaptivePassSeconds / std::max(seconds, 1e-9)));

@@ -106,6 +106,17 @@ TEST(SpectralRender, NoiseTargetStopsWhenTheEstimateIsReached) {
   EXPECT_LT(film.samplesPerPixelDone(), 4096);
   EXPECT_GE(film.samplesPerPixelDone(), kMinNoiseSamples);
   EXPECT_LE(worstNoise(stats.noise), 0.08);
+  // Where it stops depends on the film only, not on timing: other pass sizes, one thread, same spp
+  // and the same sums.
+  {
+    const ThreadLimit limit(1);
+    Film again(scene.film);
+    RenderOptions fixedPasses = options;
+    fixedPasses.samplesPerPass = 3;
+    integrator.render(again, fixedPasses);
+    EXPECT_EQ(again.samplesPerPixelDone(), film.samplesPerPixelDone());
+    EXPECT_TRUE(again.sums() == film.sums());
+  }
   // The film's own estimate (its even against its odd samples, ÷ √2) agrees with the two-seed
   // measure: the even samples of two renders with different seeds, ÷ √2 for the whole film, within
   // a factor 1.5 (both are medians over the sphere's pixels of noisy per-pixel figures).
