@@ -30,12 +30,7 @@ std::size_t SkinTally::directionBin(const Vec3& exitDirection) const {
 }
 
 void SkinTally::record(const SkinPath& path) {
-  PathScore score;
-  score.end = path.end;
-  score.exitDirection = path.exitDirection;
-  score.exitOffsetXCm = path.exitOffsetXCm;
-  score.exitOffsetYCm = path.exitOffsetYCm;
-  score.events = path.events;
+  PathScore score = pathScoreOf(path);
   const bool absorbed = path.end == PathEnd::Absorbed;
   score.exitWeight = absorbed ? 0.0 : 1.0;
   if (absorbed) {

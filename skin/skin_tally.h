@@ -38,6 +38,19 @@ struct PathScore {
   std::uint32_t events = 0;
 };
 
+/// A score with the shared part of a path's outcome (end, exit direction and offset, events)
+/// copied from any path type that has those fields (SkinPath, SpectralPath).
+template <class Path>
+PathScore pathScoreOf(const Path& path) {
+  PathScore score;
+  score.end = path.end;
+  score.exitDirection = path.exitDirection;
+  score.exitOffsetXCm = path.exitOffsetXCm;
+  score.exitOffsetYCm = path.exitOffsetYCm;
+  score.events = path.events;
+  return score;
+}
+
 class SkinTally {
  public:
   explicit SkinTally(const TallyOptions& options = {});

@@ -18,12 +18,7 @@ struct Chunk {
 
 /// Records one spectral path into the tallies of its bundle's wavelengths.
 void recordPath(const SpectralPath& path, std::vector<SkinTally*>& tallies) {
-  PathScore score;
-  score.end = path.end;
-  score.exitDirection = path.exitDirection;
-  score.exitOffsetXCm = path.exitOffsetXCm;
-  score.exitOffsetYCm = path.exitOffsetYCm;
-  score.events = path.events;
+  PathScore score = pathScoreOf(path);
   const bool perWavelengthDirection = path.end == PathEnd::Transmitted && !path.transmittedDirection.empty();
   for (std::size_t i = 0; i < tallies.size(); ++i) {
     score.exitWeight = path.exitWeight[i];

@@ -249,7 +249,7 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       // once, the walk forced in): one coin fewer where most of the image's skin noise is made.
       const bool split = splitFirstSkinHit && spectrum.spectral;
       splitFirstSkinHit = false;
-      std::vector<double> surface(split ? n : 0, 0.0), before(beta, beta + n);
+      std::vector<double> surface(split ? n : 0, 0.0), before(split ? beta : beta + n, beta + n);
       const SkinScatter s = scatterSkin(*material.skin, *hit, ray.direction, spectrum, rng, beta,
                                         split ? surface.data() : nullptr);
       if (s.surfaceBranch) {

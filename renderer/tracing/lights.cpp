@@ -62,15 +62,6 @@ double LightSet::spotFalloff(const Light& light, const glm::dvec3& towardPoint) 
   return t * t * (3 - 2 * t);
 }
 
-std::optional<LightSample> LightSet::sample(const glm::dvec3& point, std::size_t channel, double uSelect, double u0,
-                                            double u1, double u2) const {
-  std::optional<LightSample> s = sampleGeometry(point, uSelect, u0, u1, u2);
-  if (!s) return std::nullopt;
-  s->value = emission(*s, channel);
-  if (!(s->value > 0)) return std::nullopt;
-  return s;
-}
-
 double LightSet::emission(const LightSample& sample, std::size_t channel) const {
   return lights_[sample.light].emission[channel] * sample.geometry;
 }

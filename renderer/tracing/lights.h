@@ -53,13 +53,10 @@ class LightSet {
   bool visible(const glm::dvec3& origin, const LightSample& sample, double offset) const;
 
   std::size_t count() const { return lights_.size(); }
-  /// One light sample for a shading point; nullopt when the chosen light sends nothing there.
-  std::optional<LightSample> sample(const glm::dvec3& point, std::size_t channel, double uSelect, double u0,
-                                    double u1, double u2) const;
 
-  /// The same sample without a channel (the light's choice and point do not depend on it):
-  /// value = geometry; emission(sample, c) gives the value at channel c. nullopt when the chosen
-  /// light sends nothing there at any channel.
+  /// One light sample for a shading point, without a channel (the light's choice and point do not
+  /// depend on it): value = geometry; emission(sample, c) gives the value at channel c. nullopt
+  /// when the chosen light sends nothing there.
   std::optional<LightSample> sampleGeometry(const glm::dvec3& point, double uSelect, double u0, double u1,
                                             double u2) const;
   /// value of `sample` at channel `channel`.
@@ -67,14 +64,14 @@ class LightSet {
 
   bool hasEnvironment() const { return environment_ >= 0; }
   double environmentRadiance(std::size_t channel) const;
-  /// Selection × solid-angle density with which sample() yields a given environment direction.
+  /// Selection × solid-angle density with which sampleGeometry() yields a given environment direction.
   double environmentPdf() const;
 
   /// Whether a shape emits, and its radiance towards `towardViewer` (unit, from the surface to the
   /// viewer) at a hit: 0 from the back side.
   bool isEmitter(std::size_t shape) const { return shape < lightOfShape_.size() && lightOfShape_[shape] >= 0; }
   double emittedRadiance(const SurfaceHit& hit, const glm::dvec3& towardViewer, std::size_t channel) const;
-  /// Selection × solid-angle density with which sample() from `from` yields the point `hit` on an
+  /// Selection × solid-angle density with which sampleGeometry() from `from` yields the point `hit` on an
   /// emitting shape.
   double emitterPdf(const glm::dvec3& from, const SurfaceHit& hit) const;
 

@@ -124,8 +124,8 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
   const int level = walks_->level(melaninMultiplier(hit), rng.uniform());
   const skin::SkinPath path = tables_ ? tables_->table(channel, level).sample(incident, rng)
                                       : walks_->walk(channel, level).trace(incident, rng);
-  return exitOf(hit, direction, path.end, path.exitDirection, path.exitOffsetXCm, path.exitOffsetYCm, geometry,
-                materialOfShape);
+  return exitOf(hit, direction, normals, frame, path.end, path.exitDirection, path.exitOffsetXCm,
+                path.exitOffsetYCm, geometry, materialOfShape);
 }
 
 SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t bundle,
@@ -140,8 +140,8 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   thread_local skin::SpectralPath path;  // reused: the walk keeps its per-λ arrays there
   walk.trace(incident, rng, path, surfaceWeights != nullptr);
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
-  SkinScatter out = exitOf(hit, direction, path.end, path.exitDirection, path.exitOffsetXCm, path.exitOffsetYCm,
-                           geometry, materialOfShape);
+  SkinScatter out = exitOf(hit, direction, normals, frame, path.end, path.exitDirection, path.exitOffsetXCm,
+                           path.exitOffsetYCm, geometry, materialOfShape);
   if (surfaceWeights && !path.surfaceWeight.empty()) {
     out.surfaceBranch = true;
     out.surfaceDirection = glm::normalize(toGlm(frame.toWorld(path.surfaceDirection)));
@@ -150,12 +150,11 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   return out;
 }
 
-SkinScatter SkinMaterial::exitOf(const SurfaceHit& hit, const glm::dvec3& direction, skin::PathEnd end,
-                                 const skin::Vec3& exitDirection, double offsetXCm, double offsetYCm,
-                                 const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape) const {
-  const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
+SkinScatter SkinMaterial::exitOf(const SurfaceHit& hit, const glm::dvec3& direction, const FacingNormals& normals,
+                                 const skin::Frame& frame, skin::PathEnd end, const skin::Vec3& exitDirection,
+                                 double offsetXCm, double offsetYCm, const EmbreeScene& geometry,
+                                 const std::vector<std::size_t>& materialOfShape) const {
   const glm::dvec3 &ng = normals.geometric, &ns = normals.shading;
-  const skin::Frame frame(toSkin(-ns));
   SkinScatter out;
   out.point = hit.position;
   out.shadingNormal = ns;

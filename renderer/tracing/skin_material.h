@@ -60,6 +60,7 @@
 #include "renderer/scene/scene.h"
 #include "renderer/tracing/skin_table_cache.h"
 #include "renderer/tracing/skin_walk_cache.h"
+#include "renderer/tracing/surface_vectors.h"
 #include "renderer/scene/texture_map.h"
 #include "skin/core/random.h"
 #include "skin/spectral_database.h"
@@ -127,9 +128,11 @@ class SkinMaterial {
 
  private:
   /// The walk's exit in world terms: the entry frame, the path's end, offset and direction.
-  SkinScatter exitOf(const SurfaceHit& hit, const glm::dvec3& direction, skin::PathEnd end,
-                     const skin::Vec3& exitDirection, double offsetXCm, double offsetYCm,
-                     const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape) const;
+  /// `normals` face the arriving ray, `frame` is the walk's (z into the skin).
+  SkinScatter exitOf(const SurfaceHit& hit, const glm::dvec3& direction, const FacingNormals& normals,
+                     const skin::Frame& frame, skin::PathEnd end, const skin::Vec3& exitDirection,
+                     double offsetXCm, double offsetYCm, const EmbreeScene& geometry,
+                     const std::vector<std::size_t>& materialOfShape) const;
 
   std::size_t materialIndex_;
   double unitCm_;

@@ -260,7 +260,9 @@ TEST(SpectralBundle, GroupsByAngleRayleighDepthAndSize) {
       highTheta = std::max(highTheta, optics[i].meanScatteringAngleRad);
     }
     EXPECT_EQ(lowTheta == 0, highTheta == 0);  // θo = 0 never shares with θo > 0
-    if (lowTheta > 0) EXPECT_LE(std::log(highTheta / lowTheta), rule.maxLogAngleSpread + 1e-12);
+    if (lowTheta > 0) {
+      EXPECT_LE(std::log(highTheta / lowTheta), rule.maxLogAngleSpread + 1e-12);
+    }
     for (std::size_t k = 1; k < bundle.size(); ++k)
       EXPECT_LT(optics[bundle[k - 1]].wavelengthNm, optics[bundle[k]].wavelengthNm);
   }
