@@ -11,19 +11,19 @@
 #include <memory>
 #include <sstream>
 
-#include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/estimator_option.h"
-#include "app/option_checks.h"
-#include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
+#include "app/option_checks.h"
 #include "app/progress_bar.h"
 #include "app/specimen_options.h"
 #include "app/wavelength_list.h"
+#include "renderer/scene/data_paths.h"
+#include "skin/core/atomic_file.h"
+#include "skin/core/constants.h"
+#include "skin/core/thread_limit.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
-#include "skin/core/thread_limit.h"
-#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
@@ -50,7 +50,8 @@ std::string formatCsv(const skin::DirectionBins& bins, const skin::ReflectionDis
   std::ostringstream csv;
   csv << "polar_lower_deg,polar_upper_deg,azimuth_lower_deg,azimuth_upper_deg,solid_angle_sr";
   for (const char* quantity : {"per_sr", "brdf"})
-    for (const char* part : {"surface", "subsurface", "total"}) csv << "," << part << "_" << quantity << "," << part << "_" << quantity << "_stderr";
+    for (const char* part : {"surface", "subsurface", "total"})
+      csv << "," << part << "_" << quantity << "," << part << "_" << quantity << "_stderr";
   csv << "\n";
   char buffer[64];
   auto put = [&](double value) {
@@ -86,16 +87,17 @@ std::string describeWavelengths(const std::vector<double>& wavelengths) {
   if (wavelengths.size() == 1) {
     text << wavelengths.front() << " nm";
   } else {
-    text << "mean of " << wavelengths.size() << " wavelengths " << wavelengths.front() << "–" << wavelengths.back()
-         << " nm (equal weight)";
+    text << "mean of " << wavelengths.size() << " wavelengths " << wavelengths.front() << "–"
+         << wavelengths.back() << " nm (equal weight)";
   }
   return text.str();
 }
 
-void plotInPlane(const BrdfArguments& args, const std::string& specimenName, const std::vector<double>& wavelengths,
-                 const skin::ReflectionDistribution& d) {
+void plotInPlane(const BrdfArguments& args, const std::string& specimenName,
+                 const std::vector<double>& wavelengths, const skin::ReflectionDistribution& d) {
   const skin::InPlaneCut& cut = d.inPlanePerSteradian;
-  auto series = [&](const std::string& title, const std::vector<skin::Estimate>& values, const std::string& style) {
+  auto series = [&](const std::string& title, const std::vector<skin::Estimate>& values,
+                    const std::string& style) {
     PlotSeries s{title, cut.signedPolarDeg, {}, {}, style};
     for (const skin::Estimate& e : values) {
       s.y.push_back(e.mean);
@@ -104,8 +106,9 @@ void plotInPlane(const BrdfArguments& args, const std::string& specimenName, con
     return s;
   };
   char totals[200];
-  std::snprintf(totals, sizeof totals, "R_s = %.4f, R_d = %.4f, R_t = %.4f (± %.1g)", d.surfaceReflectance.mean,
-                d.subsurfaceReflectance.mean, d.totalReflectance.mean, d.totalReflectance.standardError);
+  std::snprintf(totals, sizeof totals, "R_s = %.4f, R_d = %.4f, R_t = %.4f (± %.1g)",
+                d.surfaceReflectance.mean, d.subsurfaceReflectance.mean, d.totalReflectance.mean,
+                d.totalReflectance.standardError);
   PlotPanel panel{std::string("in the plane of incidence; ") + totals,
                   "signed reflection angle θr (°): < 0 toward the source, > 0 specular side",
                   "BRDF·cos θr = reflected fraction per sr",
@@ -114,19 +117,22 @@ void plotInPlane(const BrdfArguments& args, const std::string& specimenName, con
                    series("subsurface R_d", cut.subsurface, "linespoints lw 2 pt 5 ps 0.6"),
                    series("total R_t", cut.total, "linespoints lw 2 pt 9 ps 0.6")}};
   std::ostringstream title;
-  title << "HyLIoS " << specimenName << ", incidence " << args.angleDeg << "°, " << describeWavelengths(wavelengths)
-        << ", " << args.rays << " rays per wavelength";
+  title << "HyLIoS " << specimenName << ", incidence " << args.angleDeg << "°, "
+        << describeWavelengths(wavelengths) << ", " << args.rays << " rays per wavelength";
   plotPanels(args.plot, title.str(), {panel}, 1, 1100, 650);
 }
 
 void runBrdf(const BrdfArguments& args) {
   if (args.visible == !args.wavelengths.empty())
-    throw std::invalid_argument("hylios brdf: give exactly one of --wavelengths LIST and --visible");
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}}, {inputFile("--specimen", args.specimen.specimen)});
+    throw std::invalid_argument(
+        "hylios brdf: give exactly one of --wavelengths LIST and --visible");
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
+               {inputFile("--specimen", args.specimen.specimen)});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
-  const std::vector<double> wavelengths = parseWavelengthList(args.visible ? kVisibleWavelengths : args.wavelengths);
+  const std::vector<double> wavelengths =
+      parseWavelengthList(args.visible ? kVisibleWavelengths : args.wavelengths);
   std::vector<skin::SkinOptics> optics;  // first, so that a bad wavelength fails before any walk
   for (double w : wavelengths) optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
   const skin::DirectionBins bins(args.polarBins, args.azimuthBins);
@@ -146,8 +152,9 @@ void runBrdf(const BrdfArguments& args) {
   writeTextAtomically(args.out, formatCsv(bins, d));
   std::printf("%s, %s, incidence %g°: R_s = %.5f ± %.5f, R_d = %.5f ± %.5f, R_t = %.5f ± %.5f\n",
               specimen.name.c_str(), describeWavelengths(wavelengths).c_str(), args.angleDeg,
-              d.surfaceReflectance.mean, d.surfaceReflectance.standardError, d.subsurfaceReflectance.mean,
-              d.subsurfaceReflectance.standardError, d.totalReflectance.mean, d.totalReflectance.standardError);
+              d.surfaceReflectance.mean, d.surfaceReflectance.standardError,
+              d.subsurfaceReflectance.mean, d.subsurfaceReflectance.standardError,
+              d.totalReflectance.mean, d.totalReflectance.standardError);
   if (!args.plot.empty()) plotInPlane(args, specimen.name, wavelengths, d);
 }
 
@@ -155,31 +162,43 @@ void runBrdf(const BrdfArguments& args) {
 
 void registerBrdfCommand(CLI::App& app) {
   auto args = std::make_shared<BrdfArguments>();
-  CLI::App* command = app.add_subcommand(
-      "brdf", "Angular distribution of reflected light: surface/subsurface/total per sr and BRDF (CSV, optional in-plane plot)");
+  CLI::App* command =
+      app.add_subcommand("brdf",
+                         "Angular distribution of reflected light: surface/subsurface/total per sr "
+                         "and BRDF (CSV, optional in-plane plot)");
   addSpecimenOptions(*command, args->specimen);
   command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
       ->check(finiteRange(0.0, 89.999))
       ->capture_default_str();
-  auto* wavelengths = command->add_option("--wavelengths", args->wavelengths,
-                                          "start:stop:step or a comma list, nm; several are averaged with equal weight");
-  command->add_flag("--visible", args->visible, "Average over 380–780 nm every 10 nm, equal weight per wavelength")
+  auto* wavelengths = command->add_option(
+      "--wavelengths", args->wavelengths,
+      "start:stop:step or a comma list, nm; several are averaged with equal weight");
+  command
+      ->add_flag("--visible", args->visible,
+                 "Average over 380–780 nm every 10 nm, equal weight per wavelength")
       ->excludes(wavelengths);
   addEstimatorOption(*command, args->estimator);
   command->add_option("--rays", args->rays, "Rays per wavelength")
       ->check(unsignedRange(1, std::uint64_t{1} << 40))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+  command
+      ->add_option("--seed", args->seed,
+                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
       ->check(seedRange());
-  command->add_option("--polar-bins", args->polarBins, "Bins of the reflection angle over [0°, 90°]")
+  command
+      ->add_option("--polar-bins", args->polarBins, "Bins of the reflection angle over [0°, 90°]")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1800}))
       ->capture_default_str();
-  command->add_option("--azimuth-bins", args->azimuthBins, "Bins of the azimuth over [−180°, 180°), 0° = specular side")
+  command
+      ->add_option("--azimuth-bins", args->azimuthBins,
+                   "Bins of the azimuth over [−180°, 180°), 0° = specular side")
       ->check(CLI::Range(std::size_t{1}, std::size_t{3600}))
       ->capture_default_str();
-  command->add_option("--out", args->out, "CSV file to write, one row per (polar, azimuth) bin")->required();
+  command->add_option("--out", args->out, "CSV file to write, one row per (polar, azimuth) bin")
+      ->required();
   command->add_option("--plot", args->plot, "PNG of the in-plane cut (φ = 0° and 180°) to write");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
   command->callback([args] { runBrdf(*args); });
 }
 

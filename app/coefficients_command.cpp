@@ -18,15 +18,15 @@
 #include <string>
 #include <vector>
 
-#include "skin/core/atomic_file.h"
 #include "app/commands.h"
-#include "app/option_checks.h"
-#include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
+#include "app/option_checks.h"
 #include "app/wavelength_list.h"
+#include "renderer/scene/data_paths.h"
+#include "skin/core/atomic_file.h"
 #include "skin/skin_optics.h"
-#include "skin/spectral_database.h"
 #include "skin/specimen.h"
+#include "skin/spectral_database.h"
 
 namespace hylios {
 namespace {
@@ -67,8 +67,8 @@ std::string csvHeader() {
 
 std::string checked(double value, double nm, skin::Layer layer, const char* what) {
   if (!std::isfinite(value))
-    throw std::runtime_error(fmt::format("{} of {} at {} nm is {}", what, skin::layerName(layer),
-                                         nm, value));
+    throw std::runtime_error(
+        fmt::format("{} of {} at {} nm is {}", what, skin::layerName(layer), nm, value));
   return fmt::format("{:.6g}", value);
 }
 
@@ -91,9 +91,12 @@ std::string csvRows(const skin::SkinOptics& optics) {
 
 std::string unitLabel(skin::ConcentrationUnit unit) {
   switch (unit) {
-    case skin::ConcentrationUnit::VolumeFraction: return "per volume fraction";
-    case skin::ConcentrationUnit::MassConcentration: return "per mg/mL";
-    case skin::ConcentrationUnit::MolarConcentration: return "per mol/L";
+    case skin::ConcentrationUnit::VolumeFraction:
+      return "per volume fraction";
+    case skin::ConcentrationUnit::MassConcentration:
+      return "per mg/mL";
+    case skin::ConcentrationUnit::MolarConcentration:
+      return "per mol/L";
   }
   return "";
 }
@@ -120,8 +123,11 @@ void addPositive(PlotSeries& series, double x, double y) {
 
 void writePlot(const std::filesystem::path& png, const skin::Specimen& specimen,
                const skin::SpectralDatabase& spectra, const std::vector<skin::SkinOptics>& optics) {
-  PlotPanel absorbers{"Specific absorption of the absorbers (paper Fig. 2)", "wavelength (nm)",
-                      "specific absorption (cm^{-1} per unit)", true, {}};
+  PlotPanel absorbers{"Specific absorption of the absorbers (paper Fig. 2)",
+                      "wavelength (nm)",
+                      "specific absorption (cm^{-1} per unit)",
+                      true,
+                      {}};
   for (skin::Absorber a : skin::kAllAbsorbers) {
     PlotSeries series;
     series.title = fmt::format("{} ({})", plotLabel(skin::absorberName(a)),
@@ -132,7 +138,10 @@ void writePlot(const std::filesystem::path& png, const skin::Specimen& specimen,
     if (!series.x.empty()) absorbers.series.push_back(std::move(series));
   }
   PlotPanel layers{"Total absorption coefficient per layer, specimen " + specimen.name,
-                   "wavelength (nm)", "{/Symbol m}_a (cm^{-1})", true, {}};
+                   "wavelength (nm)",
+                   "{/Symbol m}_a (cm^{-1})",
+                   true,
+                   {}};
   for (skin::Layer l : skin::kAllLayers) {
     PlotSeries series;
     series.title = plotLabel(skin::layerName(l));
@@ -176,11 +185,12 @@ void registerCoefficientsCommand(CLI::App& app) {
   auto options = std::make_shared<CoefficientsOptions>();
   CLI::App* command = app.add_subcommand(
       "coefficients", "Write every layer's optical coefficients of a specimen (CSV, optional PNG)");
-  command->add_option("--specimen", options->specimen,
-                      "S1..S4 (scenes/specimens/) or the path of a specimen .toml file")
+  command
+      ->add_option("--specimen", options->specimen,
+                   "S1..S4 (scenes/specimens/) or the path of a specimen .toml file")
       ->required();
-  command->add_option("--wavelengths", options->wavelengths,
-                      "start:stop:step or a comma list, in nm")
+  command
+      ->add_option("--wavelengths", options->wavelengths, "start:stop:step or a comma list, in nm")
       ->capture_default_str();
   command->add_option("--out", options->csvPath, "CSV file to write")->required();
   command->add_option("--plot", options->plotPath, "PNG file to write (needs gnuplot)");

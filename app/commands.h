@@ -5,9 +5,9 @@
 
 namespace hylios {
 
-void registerCoefficientsCommand(CLI::App& app);  // coefficients_command.cpp
-void registerSlabCommand(CLI::App& app);          // slab_command.cpp
-void registerSpectrumCommand(CLI::App& app);      // spectrum_command.cpp
+void registerCoefficientsCommand(CLI::App& app);    // coefficients_command.cpp
+void registerSlabCommand(CLI::App& app);            // slab_command.cpp
+void registerSpectrumCommand(CLI::App& app);        // spectrum_command.cpp
 void registerBrdfCommand(CLI::App& app);            // brdf_command.cpp
 void registerForwardProfileCommand(CLI::App& app);  // forward_profile_command.cpp
 void registerRadialProfileCommand(CLI::App& app);   // radial_profile_command.cpp

@@ -34,7 +34,10 @@ CLI::Option* addEnumOption(CLI::App& command, const std::string& option, Target&
                            const EnumNames<E, N>& names, const std::string& help) {
   return command
       .add_option_function<std::string>(
-          option, [&value, &names, option](const std::string& text) { value = parseEnum(text, names, option); },
+          option,
+          [&value, &names, option](const std::string& text) {
+            value = parseEnum(text, names, option);
+          },
           help)
       ->check(enumCheck(names, option));
 }

@@ -8,9 +8,10 @@ namespace hylios {
 
 void addEstimatorOption(CLI::App& command, std::string& estimator) {
   command
-      .add_option("--estimator", estimator,
-                  "spectral (default: one path carries a bundle of wavelengths, absorption as weight) or "
-                  "per-wavelength (one analog walk per wavelength and ray: the reference)")
+      .add_option(
+          "--estimator", estimator,
+          "spectral (default: one path carries a bundle of wavelengths, absorption as weight) or "
+          "per-wavelength (one analog walk per wavelength and ray: the reference)")
       ->check(CLI::IsMember({"spectral", "per-wavelength"}));
 }
 
@@ -21,7 +22,8 @@ std::vector<skin::SkinTally> simulateWithEstimator(const std::string& estimator,
     return skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
   }
   std::vector<skin::SkinTally> tallies(optics.size());
-  tbb::parallel_for(std::size_t{0}, optics.size(), [&](std::size_t i) { tallies[i] = skin::simulateSkin(optics[i], run); });
+  tbb::parallel_for(std::size_t{0}, optics.size(),
+                    [&](std::size_t i) { tallies[i] = skin::simulateSkin(optics[i], run); });
   return tallies;
 }
 

@@ -1,10 +1,10 @@
 // The --estimator option of the commands that walk skin (spectrum, brdf, forward-profile,
 // radial-profile), and the run it selects (skin/estimator.h).
 #pragma once
+#include <CLI/CLI.hpp>
+
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "skin/estimator.h"
 #include "skin/skin_simulation.h"

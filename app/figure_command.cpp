@@ -9,8 +9,8 @@
 
 #include "app/commands.h"
 #include "app/option_checks.h"
-#include "renderer/image/film_output.h"
 #include "app/render_options.h"
+#include "renderer/image/film_output.h"
 #include "renderer/scene/scene_file.h"
 #include "renderer/tracing/render_memory.h"
 
@@ -32,7 +32,9 @@ void checkOutputFolder(const std::string& out) {
   if (fs::exists(out, error) && !fs::is_directory(out, error))
     throw std::invalid_argument("--out '" + out + "': exists and is not a folder");
   fs::create_directories(out, error);
-  if (error) throw std::invalid_argument("--out '" + out + "': cannot create the folder: " + error.message());
+  if (error)
+    throw std::invalid_argument("--out '" + out +
+                                "': cannot create the folder: " + error.message());
   checkWritableOutput({"--out", (fs::path(out) / "contact_sheet.png").string()});
 }
 
@@ -43,16 +45,19 @@ void runFigure(const FigureArguments& args) {
   for (const auto& file : args.scenes) {
     const std::string stem = fs::path(file).stem().string();
     if (const auto [it, inserted] = stems.emplace(stem, file); !inserted)
-      throw std::invalid_argument("scenes '" + it->second + "' and '" + file + "' would both be written to '" +
-                                  (fs::path(args.out) / (stem + ".exr")).string() + "'; rename one of them");
+      throw std::invalid_argument(
+          "scenes '" + it->second + "' and '" + file + "' would both be written to '" +
+          (fs::path(args.out) / (stem + ".exr")).string() + "'; rename one of them");
   }
   // Parse every scene first, so a typo in the last one fails before hours of rendering.
   std::vector<SceneDesc> scenes;
-  for (const auto& file : args.scenes) scenes.push_back(applyRenderSettings(loadSceneFile(file), settings));
+  for (const auto& file : args.scenes)
+    scenes.push_back(applyRenderSettings(loadSceneFile(file), settings));
   checkOutputFolder(args.out);
   std::vector<NamedPath> inputs, outputs;
   for (const auto& file : args.scenes) inputs.push_back({"scene", file});
-  for (const auto& [stem, file] : stems) outputs.push_back({"--out", (fs::path(args.out) / (stem + ".exr")).string()});
+  for (const auto& [stem, file] : stems)
+    outputs.push_back({"--out", (fs::path(args.out) / (stem + ".exr")).string()});
   checkOutputs(outputs, inputs);
   for (const SceneDesc& scene : scenes) checkRenderMemory(scene);
   std::vector<fs::path> panels;
@@ -61,13 +66,15 @@ void runFigure(const FigureArguments& args) {
   for (const SceneDesc& scene : scenes) {
     const RenderResult result = renderScene(scene, settings, &std::cout);
     const std::string stem = scene.file.stem().string();
-    const auto written = writeFilmOutputs(*result.film, fs::path(args.out) / (stem + ".exr"), renderAttributes(scene, result));
+    const auto written = writeFilmOutputs(*result.film, fs::path(args.out) / (stem + ".exr"),
+                                          renderAttributes(scene, result));
     int previews = 0;
     for (const auto& path : written) {
       std::cout << "wrote " << path.string() << "\n";
       if (path.extension() != ".png") continue;
       panels.push_back(path);
-      const std::string band = path.stem().string().substr(std::min(path.stem().string().size(), stem.size() + 1));
+      const std::string band =
+          path.stem().string().substr(std::min(path.stem().string().size(), stem.size() + 1));
       labels.push_back(stem + ": " + band);
       ++previews;
     }
@@ -76,7 +83,8 @@ void runFigure(const FigureArguments& args) {
   const fs::path sheet = fs::path(args.out) / "contact_sheet.png";
   // One row per scene with its previews side by side; scenes with a single preview each (the
   // paper's figures) make one row of panels, like the paper's.
-  writeContactSheet(panels, labels, sheet, columns == 1 ? static_cast<int>(panels.size()) : columns);
+  writeContactSheet(panels, labels, sheet,
+                    columns == 1 ? static_cast<int>(panels.size()) : columns);
   std::cout << "wrote " << sheet.string() << "\n";
 }
 
@@ -84,8 +92,11 @@ void runFigure(const FigureArguments& args) {
 
 void registerFigureCommand(CLI::App& app) {
   auto args = std::make_shared<FigureArguments>();
-  CLI::App* command = app.add_subcommand("figure", "Render several scenes into a folder with a contact sheet");
-  command->add_option("scenes", args->scenes, "Scene files (TOML)")->required()->check(CLI::ExistingFile);
+  CLI::App* command =
+      app.add_subcommand("figure", "Render several scenes into a folder with a contact sheet");
+  command->add_option("scenes", args->scenes, "Scene files (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
   command->add_option("--out", args->out, "Output folder")->required();
   addRenderCommandOptions(*command, args->options);
   command->callback([args] { runFigure(*args); });

@@ -13,17 +13,17 @@
 #include <memory>
 #include <sstream>
 
-#include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/estimator_option.h"
-#include "app/option_checks.h"
-#include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
+#include "app/option_checks.h"
 #include "app/specimen_options.h"
+#include "renderer/scene/data_paths.h"
+#include "skin/core/atomic_file.h"
+#include "skin/core/constants.h"
+#include "skin/core/thread_limit.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
-#include "skin/core/thread_limit.h"
-#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
@@ -49,26 +49,29 @@ double belowRefractiveIndex(const std::string& text, const skin::SkinOptics& opt
   char* end = nullptr;
   const double n = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(n) || n < 1.0 || n > 10.0)
-    throw std::invalid_argument("--below-index '" + text + "': expected 'matched' or a refractive index in [1, 10]");
+    throw std::invalid_argument("--below-index '" + text +
+                                "': expected 'matched' or a refractive index in [1, 10]");
   return n;
 }
 
 std::string formatCsv(const skin::TransmissionProfile& p) {
   std::ostringstream csv;
-  csv << "polar_lower_deg,polar_upper_deg,solid_angle_sr,transmitted_per_sr,transmitted_per_sr_stderr,"
+  csv << "polar_lower_deg,polar_upper_deg,solid_angle_sr,transmitted_per_sr,transmitted_per_sr_"
+         "stderr,"
          "relative_to_normal,relative_to_normal_stderr\n";
   char line[256];
   for (std::size_t i = 0; i < p.perSteradian.size(); ++i) {
-    std::snprintf(line, sizeof line, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", p.polarLowerDeg[i], p.polarUpperDeg[i],
-                  p.solidAngleSr[i], p.perSteradian[i].mean, p.perSteradian[i].standardError, p.relativeToNormal[i].mean,
+    std::snprintf(line, sizeof line, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", p.polarLowerDeg[i],
+                  p.polarUpperDeg[i], p.solidAngleSr[i], p.perSteradian[i].mean,
+                  p.perSteradian[i].standardError, p.relativeToNormal[i].mean,
                   p.relativeToNormal[i].standardError);
     csv << line;
   }
   return csv.str();
 }
 
-void plotProfile(const ForwardProfileArguments& args, const std::string& specimenName, double belowIndex,
-                 const skin::TransmissionProfile& p) {
+void plotProfile(const ForwardProfileArguments& args, const std::string& specimenName,
+                 double belowIndex, const skin::TransmissionProfile& p) {
   PlotSeries model{"HyLIoS ± 1 s.e.", {}, {}, {}, "linespoints lw 2 pt 7 ps 0.6"};
   PlotSeries diffuse{"cos θ (diffuse)", {}, {}, {}, "lines lw 1 dt 2 lc rgb 'black'"};
   for (std::size_t i = 0; i < p.perSteradian.size(); ++i) {
@@ -82,17 +85,23 @@ void plotProfile(const ForwardProfileArguments& args, const std::string& specime
     diffuse.y.push_back(std::cos(deg * kRadPerDeg));
   }
   char title[300];
-  std::snprintf(title, sizeof title,
-                "HyLIoS %s epidermis, %g nm, normal incidence, %llu rays, below n = %.3f: T = %.4f ± %.4f",
-                specimenName.c_str(), args.wavelengthNm, static_cast<unsigned long long>(args.rays), belowIndex,
-                p.transmittance.mean, p.transmittance.standardError);
-  PlotPanel panel{"transmitted light per steradian, normalised to the normal direction (paper Fig. 8)",
-                  "angle from the inward normal θ (°)", "relative transmitted intensity per sr", false, {model, diffuse}};
+  std::snprintf(
+      title, sizeof title,
+      "HyLIoS %s epidermis, %g nm, normal incidence, %llu rays, below n = %.3f: T = %.4f ± %.4f",
+      specimenName.c_str(), args.wavelengthNm, static_cast<unsigned long long>(args.rays),
+      belowIndex, p.transmittance.mean, p.transmittance.standardError);
+  PlotPanel panel{
+      "transmitted light per steradian, normalised to the normal direction (paper Fig. 8)",
+      "angle from the inward normal θ (°)",
+      "relative transmitted intensity per sr",
+      false,
+      {model, diffuse}};
   plotPanels(args.plot, title, {panel}, 1, 1000, 650);
 }
 
 void runForwardProfile(const ForwardProfileArguments& args) {
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}}, {inputFile("--specimen", args.specimen.specimen)});
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
+               {inputFile("--specimen", args.specimen.specimen)});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -109,8 +118,9 @@ void runForwardProfile(const ForwardProfileArguments& args) {
   const skin::TransmissionProfile profile = skin::transmissionProfile(tally);
   writeTextAtomically(args.out, formatCsv(profile));
   std::printf("%s epidermis at %g nm, below n = %.4f: T = %.5f ± %.5f, R = %.5f, absorbed %.5f\n",
-              specimen.name.c_str(), args.wavelengthNm, run.walk.belowRefractiveIndex, profile.transmittance.mean,
-              profile.transmittance.standardError, tally.reflectance().mean, tally.absorptance().mean);
+              specimen.name.c_str(), args.wavelengthNm, run.walk.belowRefractiveIndex,
+              profile.transmittance.mean, profile.transmittance.standardError,
+              tally.reflectance().mean, tally.absorptance().mean);
   if (!args.plot.empty()) plotProfile(args, specimen.name, run.walk.belowRefractiveIndex, profile);
 }
 
@@ -119,8 +129,9 @@ void runForwardProfile(const ForwardProfileArguments& args) {
 void registerForwardProfileCommand(CLI::App& app) {
   auto args = std::make_shared<ForwardProfileArguments>();
   args->specimen.specimen = "S2";  // the paper's Fig. 8 specimen
-  CLI::App* command = app.add_subcommand(
-      "forward-profile", "Angular profile of light transmitted through the epidermis at normal incidence (paper Fig. 8)");
+  CLI::App* command = app.add_subcommand("forward-profile",
+                                         "Angular profile of light transmitted through the "
+                                         "epidermis at normal incidence (paper Fig. 8)");
   addSpecimenOptions(*command, args->specimen);
   command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
       ->check(finiteRange(0, 1e6))
@@ -129,17 +140,24 @@ void registerForwardProfileCommand(CLI::App& app) {
   command->add_option("--rays", args->rays, "Rays")
       ->check(unsignedRange(1, std::uint64_t{1} << 40))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+  command
+      ->add_option("--seed", args->seed,
+                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
       ->check(seedRange());
-  command->add_option("--polar-bins", args->polarBins, "Bins of the angle from the inward normal over [0°, 90°]")
+  command
+      ->add_option("--polar-bins", args->polarBins,
+                   "Bins of the angle from the inward normal over [0°, 90°]")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1800}))
       ->capture_default_str();
-  command->add_option("--below-index", args->belowIndex,
-                      "Medium under the stratum basale: 'matched' (its own index) or a refractive index ≥ 1")
+  command
+      ->add_option(
+          "--below-index", args->belowIndex,
+          "Medium under the stratum basale: 'matched' (its own index) or a refractive index ≥ 1")
       ->capture_default_str();
   command->add_option("--out", args->out, "CSV file to write, one row per polar bin")->required();
   command->add_option("--plot", args->plot, "PNG plot to write");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
   command->callback([args] { runForwardProfile(*args); });
 }
 

@@ -1,11 +1,12 @@
 #include "app/gnuplot_plot.h"
 
+#include <sys/wait.h>
+
 #include <cstdio>
 #include <fstream>
 #include <random>
 #include <sstream>
 #include <stdexcept>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "skin/core/atomic_file.h"
@@ -55,12 +56,14 @@ std::string panelCommands(const PlotPanel& panel, const std::filesystem::path& f
   std::ostringstream script;
   script << "set title " << quoted(panel.title) << "\n"
          << "set xlabel " << quoted(panel.xLabel) << "\nset ylabel " << quoted(panel.yLabel) << "\n"
-         << (panel.logY ? "set logscale y\nset format y '10^{%T}'\n" : "unset logscale y\nset format y '%g'\n")
+         << (panel.logY ? "set logscale y\nset format y '10^{%T}'\n"
+                        : "unset logscale y\nset format y '%g'\n")
          << "plot ";
   bool first = true;
   for (std::size_t s = 0; s < panel.series.size(); ++s) {
     const PlotSeries& series = panel.series[s];
-    const auto data = folder / ("p" + std::to_string(panelIndex) + "s" + std::to_string(s) + ".dat");
+    const auto data =
+        folder / ("p" + std::to_string(panelIndex) + "s" + std::to_string(s) + ".dat");
     writeSeriesData(data, series);
     const std::string file = quoted(data.string());
     if (!first) script << ", \\\n  ";
@@ -90,22 +93,27 @@ void plotPanels(const std::filesystem::path& png, const std::string& title,
     script << "set terminal pngcairo size " << widthPx << "," << heightPx
            << " enhanced font 'sans,10'\nset output " << quoted(tmp.string()) << "\n"
            << "set grid\nset key outside right top\nset datafile missing 'nan'\n"
-           << "set multiplot layout " << rows << "," << columns << " title " << quoted(title) << "\n";
-    for (std::size_t p = 0; p < panels.size(); ++p) script << panelCommands(panels[p], scratch.path, p);
+           << "set multiplot layout " << rows << "," << columns << " title " << quoted(title)
+           << "\n";
+    for (std::size_t p = 0; p < panels.size(); ++p)
+      script << panelCommands(panels[p], scratch.path, p);
     script << "unset multiplot\n";
     const auto scriptFile = scratch.path / "plot.gp";
     std::ofstream(scriptFile) << script.str();
     const auto errors = scratch.path / "gnuplot.err";
-    const std::string command = "gnuplot " + quoted(scriptFile.string()) + " 2> " + quoted(errors.string());
+    const std::string command =
+        "gnuplot " + quoted(scriptFile.string()) + " 2> " + quoted(errors.string());
     const int status = std::system(command.c_str());
     if (status != 0 || !std::filesystem::exists(tmp)) {
       std::ifstream errorStream(errors);
-      std::string message((std::istreambuf_iterator<char>(errorStream)), std::istreambuf_iterator<char>());
+      std::string message((std::istreambuf_iterator<char>(errorStream)),
+                          std::istreambuf_iterator<char>());
       // The shell exits 127 when it cannot find the program; anything else is gnuplot's own
       // failure (a folder it cannot write in, a bad script), reported with its message.
       if (status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 127)
-        throw std::runtime_error("cannot plot '" + png.string() +
-                                 "': gnuplot is not installed or not on PATH (Debian: apt-get install gnuplot-nox)");
+        throw std::runtime_error(
+            "cannot plot '" + png.string() +
+            "': gnuplot is not installed or not on PATH (Debian: apt-get install gnuplot-nox)");
       throw std::runtime_error("gnuplot failed writing '" + png.string() + "'" +
                                (message.empty() ? std::string() : ": " + message));
     }

@@ -1,13 +1,13 @@
 // hylios image-diff: how far a test image is from a reference image, per channel and overall
-// (relative RMSE and relative bias, renderer/image/image_comparison.h) — for convergence studies and
-// image regression checks.
+// (relative RMSE and relative bias, renderer/image/image_comparison.h) — for convergence studies
+// and image regression checks.
 #include <iostream>
 #include <memory>
 
-#include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/option_checks.h"
 #include "renderer/image/image_comparison.h"
+#include "skin/core/atomic_file.h"
 
 namespace hylios {
 namespace {
@@ -43,19 +43,28 @@ void runImageDiff(const ImageDiffArguments& args) {
 
 void registerImageDiffCommand(CLI::App& app) {
   auto args = std::make_shared<ImageDiffArguments>();
-  CLI::App* command = app.add_subcommand(
-      "image-diff",
-      "Compare an image with a reference of the same size and channels: per channel and overall (spectral "
-      "channels pooled) relative RMSE = sqrt(mean((a-b)^2)) / mean(|b|) and mean relative difference = "
-      "mean(a-b) / mean(|b|), b the reference");
-  command->add_option("test", args->test, "Image to assess (OpenEXR)")->required()->check(CLI::ExistingFile);
-  command->add_option("reference", args->reference, "Reference image (OpenEXR)")->required()->check(CLI::ExistingFile);
-  command->add_option("--block", args->blockSize, "Compare means over NxN pixel blocks (default 1: pixels)")
+  CLI::App* command = app.add_subcommand("image-diff",
+                                         "Compare an image with a reference of the same size and "
+                                         "channels: per channel and overall (spectral "
+                                         "channels pooled) relative RMSE = sqrt(mean((a-b)^2)) / "
+                                         "mean(|b|) and mean relative difference = "
+                                         "mean(a-b) / mean(|b|), b the reference");
+  command->add_option("test", args->test, "Image to assess (OpenEXR)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("reference", args->reference, "Reference image (OpenEXR)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--block", args->blockSize,
+                   "Compare means over NxN pixel blocks (default 1: pixels)")
       ->check(CLI::Range(1, 1 << 16));
-  command->add_option("--csv", args->csv, "CSV file to write (one row per channel, then 'overall')");
-  command->add_flag("--noise", args->noise,
-                    "Instead: the per-pixel noise of two renders that differ only in the seed, per band, R, G, B "
-                    "and chromaticity (median over the pixels that see an object, channel A)");
+  command->add_option("--csv", args->csv,
+                      "CSV file to write (one row per channel, then 'overall')");
+  command->add_flag(
+      "--noise", args->noise,
+      "Instead: the per-pixel noise of two renders that differ only in the seed, per band, R, G, B "
+      "and chromaticity (median over the pixels that see an object, channel A)");
   command->callback([args] { runImageDiff(*args); });
 }
 

@@ -32,8 +32,10 @@ void say(const char (&text)[N]) {
 extern "C" void recordInterruptSignal(int signal) {
   int none = 0;
   if (!pendingSignal.compare_exchange_strong(none, signal, std::memory_order_relaxed)) return;
-  if (signal == SIGINT) say("\nhylios: SIGINT received");
-  else say("\nhylios: SIGTERM received");
+  if (signal == SIGINT)
+    say("\nhylios: SIGINT received");
+  else
+    say("\nhylios: SIGTERM received");
   if (ExitTableCache::buildsInProgress() > 0)
     say("; finishing the exit table being built (it is cached for the next run), then stopping; "
         "send it again to stop at once\n");
@@ -48,14 +50,16 @@ void install(int signal, struct sigaction* previous) {
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESETHAND | SA_RESTART;
   if (::sigaction(signal, &action, previous) != 0)
-    throw std::runtime_error(std::string("cannot install the handler of ") + InterruptSignalScope::signalName(signal) +
-                             ": " + std::strerror(errno));
+    throw std::runtime_error(std::string("cannot install the handler of ") +
+                             InterruptSignalScope::signalName(signal) + ": " +
+                             std::strerror(errno));
 }
 
 }  // namespace
 
 InterruptSignalScope::InterruptSignalScope() {
-  if (scopeAlive.exchange(true)) throw std::logic_error("InterruptSignalScope: another scope is alive");
+  if (scopeAlive.exchange(true))
+    throw std::logic_error("InterruptSignalScope: another scope is alive");
   pendingSignal.store(0);
   try {
     install(SIGINT, &previousInt_);
@@ -77,7 +81,9 @@ InterruptSignalScope::~InterruptSignalScope() {
   scopeAlive.store(false);
 }
 
-int InterruptSignalScope::signalNumber() const { return pendingSignal.load(std::memory_order_relaxed); }
+int InterruptSignalScope::signalNumber() const {
+  return pendingSignal.load(std::memory_order_relaxed);
+}
 
 const char* InterruptSignalScope::signalName(int signal) {
   if (signal == SIGINT) return "SIGINT";

@@ -1,5 +1,6 @@
 // hylios: hyperspectral rendering and simulation of light in human skin (HyLIoS).
 #include <CLI/CLI.hpp>
+
 #include <exception>
 #include <iostream>
 

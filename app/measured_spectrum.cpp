@@ -14,9 +14,12 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
   std::vector<std::string> fields(1);
   bool quoted = false;
   for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) fields.emplace_back();
-    else if (c != '\r') fields.back() += c;
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      fields.emplace_back();
+    else if (c != '\r')
+      fields.back() += c;
   }
   return fields;
 }
@@ -37,8 +40,9 @@ std::size_t findColumn(const std::vector<std::string>& header, const std::string
     if (header[i].rfind(column, 0) == 0) matches.push_back(i);
   }
   if (matches.size() == 1) return matches.front();
-  throw std::runtime_error(where + ": " + (matches.empty() ? "no column named '" : "several columns start with '") +
-                           column + "'");
+  throw std::runtime_error(
+      where + ": " + (matches.empty() ? "no column named '" : "several columns start with '") +
+      column + "'");
 }
 
 double parseValue(const std::string& field, const std::string& where) {
@@ -56,7 +60,9 @@ bool MeasuredSpectrum::covers(double w) const {
 }
 
 double MeasuredSpectrum::at(double w) const {
-  if (!covers(w)) throw std::out_of_range("measured spectrum '" + label + "' does not cover " + std::to_string(w) + " nm");
+  if (!covers(w))
+    throw std::out_of_range("measured spectrum '" + label + "' does not cover " +
+                            std::to_string(w) + " nm");
   const auto upper = std::lower_bound(wavelengthNm.begin(), wavelengthNm.end(), w);
   const std::size_t i = static_cast<std::size_t>(upper - wavelengthNm.begin());
   if (wavelengthNm[i] == w) return value[i];
@@ -87,15 +93,16 @@ MeasuredSpectrum parseMeasuredSpectrum(std::istream& in, const std::string& colu
     const std::string where = file + ":" + std::to_string(lineNumber);
     const auto fields = splitCsvLine(line);
     if (fields.size() != header.size())
-      throw std::runtime_error(where + ": " + std::to_string(fields.size()) + " fields, header has " +
-                               std::to_string(header.size()));
+      throw std::runtime_error(where + ": " + std::to_string(fields.size()) +
+                               " fields, header has " + std::to_string(header.size()));
     const double w = parseValue(fields[0], where);
     if (!spectrum.wavelengthNm.empty() && w <= spectrum.wavelengthNm.back())
       throw std::runtime_error(where + ": wavelengths must ascend");
     spectrum.wavelengthNm.push_back(w);
     spectrum.value.push_back(parseValue(fields[column], where));
   }
-  if (spectrum.wavelengthNm.size() < 2) throw std::runtime_error(file + ": fewer than two data rows");
+  if (spectrum.wavelengthNm.size() < 2)
+    throw std::runtime_error(file + ": fewer than two data rows");
   return spectrum;
 }
 
@@ -110,7 +117,9 @@ double rmsDifference(const std::vector<double>& wavelengthNm, const std::vector<
     ++count;
   }
   if (compared) *compared = count;
-  if (count == 0) throw std::runtime_error("measured spectrum '" + measured.label + "' covers none of the modelled wavelengths");
+  if (count == 0)
+    throw std::runtime_error("measured spectrum '" + measured.label +
+                             "' covers none of the modelled wavelengths");
   return std::sqrt(sumSquares / static_cast<double>(count));
 }
 

@@ -8,8 +8,8 @@
 namespace hylios {
 
 struct MeasuredSpectrum {
-  std::string label;                ///< the column's header
-  std::vector<double> wavelengthNm; ///< ascending
+  std::string label;                 ///< the column's header
+  std::vector<double> wavelengthNm;  ///< ascending
   std::vector<double> value;
   /// Linear interpolation; throws std::out_of_range outside [front, back].
   double at(double wavelengthNm) const;

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -10,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <system_error>
+#include <unistd.h>
 
 namespace hylios {
 
@@ -18,19 +18,24 @@ namespace fs = std::filesystem;
 std::uint64_t parseUnsigned(const std::string& text, std::uint64_t min, std::uint64_t max,
                             const std::string& option) {
   const std::string range = fmt::format("an integer in [{}, {}]", min, max);
-  if (text.empty()) throw std::invalid_argument(fmt::format("{}: empty value; expected {}", option, range));
+  if (text.empty())
+    throw std::invalid_argument(fmt::format("{}: empty value; expected {}", option, range));
   for (char c : text)
     if (c < '0' || c > '9')
-      throw std::invalid_argument(fmt::format("{} '{}': expected {} (digits only{})", option, text, range,
-                                              text[0] == '-' ? "; negative values are refused" : ""));
+      throw std::invalid_argument(
+          fmt::format("{} '{}': expected {} (digits only{})", option, text, range,
+                      text[0] == '-' ? "; negative values are refused" : ""));
   std::uint64_t value = 0;
   for (char c : text) {
     const std::uint64_t digit = static_cast<std::uint64_t>(c - '0');
     if (value > (max - digit) / 10)
-      throw std::invalid_argument(fmt::format("{} '{}': too large; expected {}", option, text, range));
+      throw std::invalid_argument(
+          fmt::format("{} '{}': too large; expected {}", option, text, range));
     value = value * 10 + digit;
   }
-  if (value < min) throw std::invalid_argument(fmt::format("{} '{}': too small; expected {}", option, text, range));
+  if (value < min)
+    throw std::invalid_argument(
+        fmt::format("{} '{}': too small; expected {}", option, text, range));
   return value;
 }
 
@@ -75,7 +80,8 @@ CLI::Validator finiteRange(double min, double max) {
         double value = 0;
         std::string why;
         if (!finiteNumber(text, value, why)) return why;
-        if (!(value >= min && value <= max)) return fmt::format("{} is not in [{}, {}]", text, min, max);
+        if (!(value >= min && value <= max))
+          return fmt::format("{} is not in [{}, {}]", text, min, max);
         return {};
       },
       fmt::format("FINITE in [{} - {}]", min, max), "FINITE_RANGE");
@@ -111,7 +117,8 @@ fs::path resolved(const fs::path& path) {
 }  // namespace
 
 bool sameFile(const fs::path& a, const fs::path& b) {
-  struct stat sa {}, sb {};
+  struct stat sa {
+  }, sb{};
   if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0)
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
   return resolved(a) == resolved(b);
@@ -119,7 +126,8 @@ bool sameFile(const fs::path& a, const fs::path& b) {
 
 NamedPath inputFile(const std::string& option, const std::string& path) {
   std::error_code error;
-  if (!path.empty() && fs::exists(path, error) && !fs::is_directory(path, error)) return {option, path, true};
+  if (!path.empty() && fs::exists(path, error) && !fs::is_directory(path, error))
+    return {option, path, true};
   return {option, "", true};
 }
 
@@ -139,10 +147,13 @@ void checkWritableOutput(const NamedPath& output) {
   }
   const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   const fs::file_status folderStatus = fs::status(folder, error);
-  if (!fs::exists(folderStatus)) refuse(output, fmt::format("its folder '{}' does not exist", folder.string()));
-  if (!fs::is_directory(folderStatus)) refuse(output, fmt::format("'{}' is not a folder", folder.string()));
+  if (!fs::exists(folderStatus))
+    refuse(output, fmt::format("its folder '{}' does not exist", folder.string()));
+  if (!fs::is_directory(folderStatus))
+    refuse(output, fmt::format("'{}' is not a folder", folder.string()));
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
-    refuse(output, fmt::format("cannot write in its folder '{}': {}", folder.string(), std::strerror(errno)));
+    refuse(output, fmt::format("cannot write in its folder '{}': {}", folder.string(),
+                               std::strerror(errno)));
 }
 
 void checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
@@ -154,10 +165,12 @@ void checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<Named
     if (outputs[i].path.empty()) continue;
     for (const NamedPath& input : inputs)
       if (!input.path.empty() && sameFile(outputs[i].path, input.path))
-        refuse(outputs[i], fmt::format("is the input {} '{}'; refusing to overwrite an input", input.option, input.path));
+        refuse(outputs[i], fmt::format("is the input {} '{}'; refusing to overwrite an input",
+                                       input.option, input.path));
     for (std::size_t j = 0; j < i; ++j)
       if (!outputs[j].path.empty() && sameFile(outputs[i].path, outputs[j].path))
-        refuse(outputs[i], fmt::format("is the same file as {} '{}'", outputs[j].option, outputs[j].path));
+        refuse(outputs[i],
+               fmt::format("is the same file as {} '{}'", outputs[j].option, outputs[j].path));
   }
 }
 

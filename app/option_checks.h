@@ -46,8 +46,9 @@ NamedPath inputFile(const std::string& option, const std::string& path);
 /// an existing folder, a missing folder, a folder the user cannot write in, or an existing file
 /// the user cannot write. Throws std::invalid_argument naming the option.
 void checkWritableOutput(const NamedPath& output);
-/// checkWritableOutput for each (but optional empty ones); then refuses an output that is the same file as one of `inputs`
-/// or as another output (same canonical path, or the same file through another name or a link).
+/// checkWritableOutput for each (but optional empty ones); then refuses an output that is the same
+/// file as one of `inputs` or as another output (same canonical path, or the same file through
+/// another name or a link).
 void checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs = {});
 /// Whether two paths name the same file (both existing: the same device and inode; otherwise the
 /// same path after resolving the links and '..' of the part that exists).

@@ -6,8 +6,11 @@
 namespace hylios {
 
 ProgressBar::ProgressBar(std::string label, std::uint64_t total)
-    : label_(std::move(label)), total_(total == 0 ? 1 : total), enabled_(enabledOnThisTerminal()),
-      start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
+    : label_(std::move(label)),
+      total_(total == 0 ? 1 : total),
+      enabled_(enabledOnThisTerminal()),
+      start_(std::chrono::steady_clock::now()),
+      lastDraw_(start_) {}
 
 ProgressBar::~ProgressBar() { finish(); }
 

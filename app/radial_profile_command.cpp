@@ -6,16 +6,16 @@
 #include <memory>
 #include <sstream>
 
-#include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/estimator_option.h"
-#include "app/option_checks.h"
-#include "renderer/scene/data_paths.h"
 #include "app/gnuplot_plot.h"
+#include "app/option_checks.h"
 #include "app/specimen_options.h"
+#include "renderer/scene/data_paths.h"
+#include "skin/core/atomic_file.h"
+#include "skin/core/thread_limit.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
-#include "skin/core/thread_limit.h"
 
 namespace hylios {
 namespace {
@@ -44,18 +44,21 @@ std::string formatCsv(const skin::RadialProfile& p) {
          "reflectance_per_cm2,reflectance_per_cm2_stderr\n";
   char line[256];
   for (std::size_t i = 0; i < p.perCm2.size(); ++i) {
-    std::snprintf(line, sizeof line, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", p.innerCm[i], p.outerCm[i],
-                  skin::annulusAreaCm2(p.innerCm[i], p.outerCm[i]), p.fraction[i].mean, p.fraction[i].standardError,
-                  p.perCm2[i].mean, p.perCm2[i].standardError);
+    std::snprintf(line, sizeof line, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", p.innerCm[i],
+                  p.outerCm[i], skin::annulusAreaCm2(p.innerCm[i], p.outerCm[i]),
+                  p.fraction[i].mean, p.fraction[i].standardError, p.perCm2[i].mean,
+                  p.perCm2[i].standardError);
     csv << line;
   }
   return csv.str();
 }
 
-void plotProfile(const RadialProfileArguments& args, const std::string& specimenName, const skin::RadialProfile& p) {
+void plotProfile(const RadialProfileArguments& args, const std::string& specimenName,
+                 const skin::RadialProfile& p) {
   PlotSeries profile{"subsurface R(r) ± 1 s.e.", {}, {}, {}, "linespoints lw 2 pt 7 ps 0.5"};
   for (std::size_t i = 0; i < p.perCm2.size(); ++i) {
-    if (!(p.perCm2[i].mean > 0)) continue;  // no exit in this annulus: nothing to draw on a log axis
+    if (!(p.perCm2[i].mean > 0))
+      continue;  // no exit in this annulus: nothing to draw on a log axis
     profile.x.push_back(0.5 * (p.innerCm[i] + p.outerCm[i]));
     profile.y.push_back(p.perCm2[i].mean);
     profile.yError.push_back(p.perCm2[i].standardError);
@@ -63,16 +66,20 @@ void plotProfile(const RadialProfileArguments& args, const std::string& specimen
   char title[300];
   std::snprintf(title, sizeof title,
                 "HyLIoS %s, %g nm, incidence %g°, %llu rays: R_d = %.4f ± %.4f (%.4f beyond %g cm)",
-                specimenName.c_str(), args.wavelengthNm, args.angleDeg, static_cast<unsigned long long>(args.rays),
-                p.subsurfaceReflectance.mean, p.subsurfaceReflectance.standardError, p.beyondMaxRadius.mean,
-                args.maxRadiusCm);
-  PlotPanel panel{"subsurface reflectance per unit area around the entry point", "distance from the entry point r (cm)",
-                  "R(r) (cm^{-2})", true, {profile}};
+                specimenName.c_str(), args.wavelengthNm, args.angleDeg,
+                static_cast<unsigned long long>(args.rays), p.subsurfaceReflectance.mean,
+                p.subsurfaceReflectance.standardError, p.beyondMaxRadius.mean, args.maxRadiusCm);
+  PlotPanel panel{"subsurface reflectance per unit area around the entry point",
+                  "distance from the entry point r (cm)",
+                  "R(r) (cm^{-2})",
+                  true,
+                  {profile}};
   plotPanels(args.plot, title, {panel}, 1, 1000, 650);
 }
 
 void runRadialProfile(const RadialProfileArguments& args) {
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}}, {inputFile("--specimen", args.specimen.specimen)});
+  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
+               {inputFile("--specimen", args.specimen.specimen)});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -83,12 +90,14 @@ void runRadialProfile(const RadialProfileArguments& args) {
   run.seed = args.seed;
   run.tally.radialBins = args.bins;
   run.tally.maxRadiusCm = args.maxRadiusCm;
-  const skin::RadialProfile profile = skin::radialProfile(simulateWithEstimator(args.estimator, {optics}, run).front());
+  const skin::RadialProfile profile =
+      skin::radialProfile(simulateWithEstimator(args.estimator, {optics}, run).front());
   writeTextAtomically(args.out, formatCsv(profile));
   std::printf("%s at %g nm, incidence %g°: R_d = %.5f ± %.5f, of which %.5f ± %.5f beyond %g cm\n",
-              specimen.name.c_str(), args.wavelengthNm, args.angleDeg, profile.subsurfaceReflectance.mean,
-              profile.subsurfaceReflectance.standardError, profile.beyondMaxRadius.mean,
-              profile.beyondMaxRadius.standardError, args.maxRadiusCm);
+              specimen.name.c_str(), args.wavelengthNm, args.angleDeg,
+              profile.subsurfaceReflectance.mean, profile.subsurfaceReflectance.standardError,
+              profile.beyondMaxRadius.mean, profile.beyondMaxRadius.standardError,
+              args.maxRadiusCm);
   if (!args.plot.empty()) plotProfile(args, specimen.name, profile);
 }
 
@@ -96,8 +105,9 @@ void runRadialProfile(const RadialProfileArguments& args) {
 
 void registerRadialProfileCommand(CLI::App& app) {
   auto args = std::make_shared<RadialProfileArguments>();
-  CLI::App* command = app.add_subcommand(
-      "radial-profile", "Subsurface reflectance per unit area vs distance from the entry point, R(r) in cm⁻² (BSSRDF)");
+  CLI::App* command = app.add_subcommand("radial-profile",
+                                         "Subsurface reflectance per unit area vs distance from "
+                                         "the entry point, R(r) in cm⁻² (BSSRDF)");
   addSpecimenOptions(*command, args->specimen);
   command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
       ->check(finiteRange(0, 1e6))
@@ -109,10 +119,13 @@ void registerRadialProfileCommand(CLI::App& app) {
   command->add_option("--rays", args->rays, "Rays")
       ->check(unsignedRange(1, std::uint64_t{1} << 40))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+  command
+      ->add_option("--seed", args->seed,
+                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
       ->check(seedRange());
-  command->add_option("--max-radius-cm", args->maxRadiusCm,
-                      "Outer radius of the last annulus, cm, in [1e-4, 100] (1 µm to 1 m)")
+  command
+      ->add_option("--max-radius-cm", args->maxRadiusCm,
+                   "Outer radius of the last annulus, cm, in [1e-4, 100] (1 µm to 1 m)")
       ->check(finiteRange(kMinMaxRadiusCm, kMaxMaxRadiusCm))
       ->capture_default_str();
   command->add_option("--bins", args->bins, "Annuli of equal width over [0, max radius)")
@@ -120,7 +133,8 @@ void registerRadialProfileCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", args->out, "CSV file to write, one row per annulus")->required();
   command->add_option("--plot", args->plot, "PNG plot (log R) to write");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
   command->callback([args] { runRadialProfile(*args); });
 }
 

@@ -1,8 +1,8 @@
-// hylios render: one scene file → a spectral OpenEXR plus PNG previews (renderer/image/film_output.h).
-// SIGINT/SIGTERM stop the render after its current sample pass: the samples so far are written
-// (EXR + previews, "hylios:spp" < "hylios:sppTarget") with a checkpoint <out>.hylios-state
-// (renderer/image/render_checkpoint.h), and the command exits with 128 + signal; --resume continues the
-// checkpoint to the image an uninterrupted render gives, and removes it.
+// hylios render: one scene file → a spectral OpenEXR plus PNG previews
+// (renderer/image/film_output.h). SIGINT/SIGTERM stop the render after its current sample pass: the
+// samples so far are written (EXR + previews, "hylios:spp" < "hylios:sppTarget") with a checkpoint
+// <out>.hylios-state (renderer/image/render_checkpoint.h), and the command exits with 128 + signal;
+// --resume continues the checkpoint to the image an uninterrupted render gives, and removes it.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "app/option_checks.h"
-#include "renderer/image/film_output.h"
 #include "app/interrupt_signal.h"
-#include "renderer/image/render_checkpoint.h"
+#include "app/option_checks.h"
 #include "app/render_options.h"
+#include "renderer/image/film_output.h"
+#include "renderer/image/render_checkpoint.h"
 #include "renderer/scene/scene_file.h"
 #include "renderer/tracing/render_memory.h"
 
@@ -37,16 +37,17 @@ struct RenderArguments {
 /// --resume, --threads (the image does not depend on it), --explain, and --spp, --resolution and
 /// --seed (compared by their effect, RenderIdentity).
 std::string imageAffectingOptions(const CLI::App& command) {
-  static const std::set<std::string> ignored = {"--help", "--out", "--resume", "--threads", "--explain",
-                                                "--spp", "--resolution", "--seed"};
+  static const std::set<std::string> ignored = {"--help",    "--out", "--resume",     "--threads",
+                                                "--explain", "--spp", "--resolution", "--seed"};
   std::vector<std::string> given;
   for (const CLI::Option* option : command.get_options()) {
     if (option->count() == 0 || !option->nonpositional()) continue;
-    const std::string name =
-        option->get_lnames().empty() ? "-" + option->get_snames().front() : "--" + option->get_lnames().front();
+    const std::string name = option->get_lnames().empty() ? "-" + option->get_snames().front()
+                                                          : "--" + option->get_lnames().front();
     if (ignored.count(name) > 0) continue;
     std::string text = name + "=";
-    for (std::size_t i = 0; i < option->results().size(); ++i) text += (i ? "," : "") + option->results()[i];
+    for (std::size_t i = 0; i < option->results().size(); ++i)
+      text += (i ? "," : "") + option->results()[i];
     given.push_back(text);
   }
   std::sort(given.begin(), given.end());
@@ -62,7 +63,8 @@ std::vector<NamedPath> sceneInputs(const SceneDesc& scene) {
     if (!shape.meshPath.empty()) inputs.push_back({"mesh", shape.meshPath.string()});
   for (const MaterialDesc& material : scene.materials) {
     if (material.kind != MaterialDesc::Kind::Skin) continue;
-    if (!material.skin.melaninMap.empty()) inputs.push_back({"melanin map", material.skin.melaninMap.string()});
+    if (!material.skin.melaninMap.empty())
+      inputs.push_back({"melanin map", material.skin.melaninMap.string()});
     inputs.push_back(inputFile("specimen", material.skin.specimen));
   }
   return inputs;
@@ -79,21 +81,25 @@ void runRender(const RenderArguments& args, const CLI::App& command) {
   const std::filesystem::path checkpoint = checkpointPathFor(args.out);
   std::error_code noCheckpoint;
   if (!args.resume && std::filesystem::exists(checkpoint, noCheckpoint))
-    throw std::runtime_error("'" + checkpoint.string() + "' holds an interrupted render of '" + args.out +
-                             "'; continue it with the same command and --resume, or delete that file to start "
-                             "afresh (nothing was changed)");
+    throw std::runtime_error(
+        "'" + checkpoint.string() + "' holds an interrupted render of '" + args.out +
+        "'; continue it with the same command and --resume, or delete that file to start "
+        "afresh (nothing was changed)");
   if (args.resume)
-    settings.resumeFrom = std::make_shared<const RenderCheckpoint>(readMatchingCheckpoint(checkpoint, identity));
+    settings.resumeFrom =
+        std::make_shared<const RenderCheckpoint>(readMatchingCheckpoint(checkpoint, identity));
   checkRenderMemory(scene);
   const InterruptSignalScope signals;
   settings.stopRequested = [&signals] { return signals.requested(); };
   const RenderResult result = renderScene(scene, settings, &std::cout);
-  const std::vector<std::pair<std::string, std::string>> attributes = renderAttributes(scene, result);
+  const std::vector<std::pair<std::string, std::string>> attributes =
+      renderAttributes(scene, result);
   if (!result.stopped) {
     for (const auto& path : writeFilmOutputs(*result.film, args.out, attributes))
       std::cout << "wrote " << path.string() << "\n";
     std::error_code ignored;
-    if (std::filesystem::remove(checkpoint, ignored)) std::cout << "removed the checkpoint " << checkpoint.string() << "\n";
+    if (std::filesystem::remove(checkpoint, ignored))
+      std::cout << "removed the checkpoint " << checkpoint.string() << "\n";
     return;
   }
   const int signal = signals.signalNumber();
@@ -108,14 +114,15 @@ void runRender(const RenderArguments& args, const CLI::App& command) {
     std::error_code noStatus;
     const std::filesystem::file_status outStatus = std::filesystem::status(args.out, noStatus);
     if (std::filesystem::exists(outStatus) && !std::filesystem::is_regular_file(outStatus)) {
-      std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal) << " at " << done
-                << "/" << scene.film.samplesPerPixel << " spp; no checkpoint, since " << args.out
-                << " is not a regular file\n";
+      std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal)
+                << " at " << done << "/" << scene.film.samplesPerPixel
+                << " spp; no checkpoint, since " << args.out << " is not a regular file\n";
     } else {
       writeRenderCheckpoint(checkpoint, identity, *result.film);
       std::cout << "wrote " << checkpoint.string() << "\n";
-      std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal) << " at " << done
-                << "/" << scene.film.samplesPerPixel << " spp; " << args.out << " holds the samples so far. Continue "
+      std::cerr << "hylios: render interrupted by " << InterruptSignalScope::signalName(signal)
+                << " at " << done << "/" << scene.film.samplesPerPixel << " spp; " << args.out
+                << " holds the samples so far. Continue "
                 << "with the same command and --resume.\n";
     }
   }
@@ -127,15 +134,21 @@ void runRender(const RenderArguments& args, const CLI::App& command) {
 
 void registerRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArguments>();
-  CLI::App* command = app.add_subcommand("render", "Render a scene file to a spectral OpenEXR and PNG previews");
-  command->add_option("scene", args->scene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
-  command->add_option("--out", args->out, "OpenEXR file to write (previews go beside it)")->required();
+  CLI::App* command =
+      app.add_subcommand("render", "Render a scene file to a spectral OpenEXR and PNG previews");
+  command->add_option("scene", args->scene, "Scene file (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--out", args->out, "OpenEXR file to write (previews go beside it)")
+      ->required();
   addRenderCommandOptions(*command, args->options);
-  auto* seed = command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (default: the scene's)")
-                   ->check(seedRange());
-  command->add_flag("--resume", args->resume,
-                    "Continue the interrupted render whose checkpoint <out>.hylios-state lies beside --out "
-                    "(same scene and options)");
+  auto* seed =
+      command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (default: the scene's)")
+          ->check(seedRange());
+  command->add_flag(
+      "--resume", args->resume,
+      "Continue the interrupted render whose checkpoint <out>.hylios-state lies beside --out "
+      "(same scene and options)");
   command->callback([args, seed, command] {
     args->seedGiven = seed->count() > 0;
     runRender(*args, *command);

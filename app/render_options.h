@@ -1,11 +1,11 @@
 // The options `hylios render` and `hylios figure` share, as given on the command line, and the
 // plain RenderSettings (renderer/tracing/render_job.h) they become.
 #pragma once
+#include <CLI/CLI.hpp>
+
 #include <optional>
 #include <string>
 #include <utility>
-
-#include <CLI/CLI.hpp>
 
 #include "renderer/tracing/render_job.h"
 #include "skin/skin_mode.h"
@@ -16,14 +16,14 @@ namespace hylios {
 std::pair<int, int> parseResolution(const std::string& text);
 
 struct RenderCommandOptions {
-  int spp = 0;                 ///< 0: the scene's
-  std::string resolution;      ///< "": the scene's, else WxH
-  int threads = 0;             ///< 0: all cores
+  int spp = 0;                             ///< 0: the scene's
+  std::string resolution;                  ///< "": the scene's, else WxH
+  int threads = 0;                         ///< 0: all cores
   std::optional<skin::SkinMode> skinMode;  ///< unset: the scene's
-  double effectTolerance = -1; ///< < 0: the scene's
+  double effectTolerance = -1;             ///< < 0: the scene's
   bool explain = false;
-  std::string estimator;       ///< "": the scene's, else spectral or per-wavelength
-  double noiseTarget = -1;     ///< < 0: the scene's (if any)
+  std::string estimator;    ///< "": the scene's, else spectral or per-wavelength
+  double noiseTarget = -1;  ///< < 0: the scene's (if any)
 };
 /// Adds --spp, --resolution, --threads, --skin-model, --epsilon, --explain, --estimator and
 /// --noise-target to `command`.

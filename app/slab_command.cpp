@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "skin/core/atomic_file.h"
 #include "app/commands.h"
 #include "app/option_checks.h"
 #include "app/slab_layer_spec.h"
-#include "skin/layered_slab.h"
+#include "skin/core/atomic_file.h"
 #include "skin/core/thread_limit.h"
+#include "skin/layered_slab.h"
 
 namespace hylios {
 namespace {
@@ -33,11 +33,11 @@ std::string csvFor(const skin::SlabResult& r) {
   std::string header =
       "specular_reflectance,diffuse_reflectance,diffuse_reflectance_stderr,transmittance,"
       "transmittance_stderr,unscattered_transmittance,absorptance,absorptance_stderr";
-  std::string row = fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}",
-                                r.specularReflectance, r.diffuseReflectance.mean,
-                                r.diffuseReflectance.standardError, r.transmittance.mean,
-                                r.transmittance.standardError, r.unscatteredTransmittance.mean,
-                                r.absorptance.mean, r.absorptance.standardError);
+  std::string row =
+      fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}", r.specularReflectance,
+                  r.diffuseReflectance.mean, r.diffuseReflectance.standardError,
+                  r.transmittance.mean, r.transmittance.standardError,
+                  r.unscatteredTransmittance.mean, r.absorptance.mean, r.absorptance.standardError);
   for (std::size_t l = 0; l < r.layerAbsorptance.size(); ++l) {
     header += fmt::format(",absorptance_layer{0},absorptance_layer{0}_stderr", l + 1);
     row += fmt::format(",{:.9g},{:.9g}", r.layerAbsorptance[l].mean,
@@ -63,11 +63,12 @@ void runSlab(const SlabOptions& o) {
   const ThreadLimit threadLimit(o.threads);
   const skin::SlabResult result = skin::simulateLayeredSlab(problem, run);
   writeTextAtomically(o.out, csvFor(result));
-  std::cout << fmt::format("Rsp {:.6f}  Rd {:.6f} ± {:.6f}  Tt {:.6f} ± {:.6f}  A {:.6f} ± {:.6f}  -> {}\n",
-                           result.specularReflectance, result.diffuseReflectance.mean,
-                           result.diffuseReflectance.standardError, result.transmittance.mean,
-                           result.transmittance.standardError, result.absorptance.mean,
-                           result.absorptance.standardError, o.out);
+  std::cout << fmt::format(
+      "Rsp {:.6f}  Rd {:.6f} ± {:.6f}  Tt {:.6f} ± {:.6f}  A {:.6f} ± {:.6f}  -> {}\n",
+      result.specularReflectance, result.diffuseReflectance.mean,
+      result.diffuseReflectance.standardError, result.transmittance.mean,
+      result.transmittance.standardError, result.absorptance.mean, result.absorptance.standardError,
+      o.out);
 }
 
 }  // namespace
@@ -91,12 +92,14 @@ void registerSlabCommand(CLI::App& app) {
   sub->add_option("--angle", options->angleDeg, "incidence angle from the normal, degrees [0, 90)")
       ->check(finiteRange(0.0, 89.999))
       ->capture_default_str();
-  sub->add_flag("--diffuse", options->diffuse, "diffuse (Lambertian) illumination instead of a beam");
+  sub->add_flag("--diffuse", options->diffuse,
+                "diffuse (Lambertian) illumination instead of a beam");
   sub->add_option("--seed", options->seed, "random seed in [0, 2^63-1]")
       ->check(seedRange())
       ->capture_default_str();
   sub->add_option("--scheme", options->scheme,
-                  "absorption scoring: weighted (default; absorption as weight, MCML's implicit capture with "
+                  "absorption scoring: weighted (default; absorption as weight, MCML's implicit "
+                  "capture with "
                   "roulette) or analog (the packet dies where it is absorbed)")
       ->check(CLI::IsMember({"analog", "weighted"}))
       ->capture_default_str();

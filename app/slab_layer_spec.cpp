@@ -50,7 +50,8 @@ skin::SlabLayer parseSlabLayerSpec(const std::string& spec) {
   for (const char* k : kKeys)
     if (!values.count(k)) fail(spec, std::string("missing key '") + k + "'");
   for (const char* k : {"mua", "mus", "d"})
-    if (values[k] < 0) fail(spec, std::string("'") + k + "' must be >= 0, got " + fmt::format("{:g}", values[k]));
+    if (values[k] < 0)
+      fail(spec, std::string("'") + k + "' must be >= 0, got " + fmt::format("{:g}", values[k]));
   if (values["n"] <= 0) fail(spec, fmt::format("'n' must be > 0, got {:g}", values["n"]));
   if (!(values["g"] > -1 && values["g"] < 1))
     fail(spec, fmt::format("'g' must be in (-1, 1), got {:g}", values["g"]));

@@ -18,7 +18,8 @@ skin::SpecimenOverride parseOverride(const std::string& text) {
   const std::string origin = "--set " + text;
   const auto equals = text.find('=');
   if (equals == std::string::npos || equals == 0)
-    throw skin::SpecimenError(origin + ": expected KEY=VALUE with KEY one of " + joined(skin::overrideKeys()));
+    throw skin::SpecimenError(origin + ": expected KEY=VALUE with KEY one of " +
+                              joined(skin::overrideKeys()));
   const std::string valueText = text.substr(equals + 1);
   char* end = nullptr;
   const double value = std::strtod(valueText.c_str(), &end);
@@ -30,7 +31,9 @@ skin::SpecimenOverride parseOverride(const std::string& text) {
 }  // namespace
 
 void addSpecimenOptions(CLI::App& command, SpecimenOptions& options) {
-  command.add_option("--specimen", options.specimen, "Specimen S1..S4 (paper Table 1) or a specimen file path")
+  command
+      .add_option("--specimen", options.specimen,
+                  "Specimen S1..S4 (paper Table 1) or a specimen file path")
       ->capture_default_str();
   command.add_option("--set", options.overrides,
                      "Override KEY=VALUE, repeatable; keys: " + joined(skin::overrideKeys()));

@@ -2,6 +2,7 @@
 // (repeatable overrides of the quantities scenes vary, see skin::overrideKeys()).
 #pragma once
 #include <CLI/CLI.hpp>
+
 #include <string>
 #include <vector>
 

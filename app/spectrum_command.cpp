@@ -1,4 +1,5 @@
-// hylios spectrum: total hemispherical reflectance of a specimen over wavelengths (paper Figs. 7, 9).
+// hylios spectrum: total hemispherical reflectance of a specimen over wavelengths (paper Figs. 7,
+// 9).
 #include <tbb/parallel_for.h>
 
 #include <cstdio>
@@ -7,24 +8,24 @@
 #include <optional>
 #include <sstream>
 
-#include "skin/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/enum_option.h"
 #include "app/estimator_option.h"
-#include "app/option_checks.h"
-#include "renderer/scene/data_paths.h"
-#include "renderer/tracing/exit_table_cache.h"
 #include "app/gnuplot_plot.h"
 #include "app/measured_spectrum.h"
+#include "app/option_checks.h"
 #include "app/progress_bar.h"
-#include "renderer/tracing/skin_table_cache.h"
 #include "app/specimen_options.h"
 #include "app/wavelength_list.h"
+#include "renderer/scene/data_paths.h"
+#include "renderer/tracing/exit_table_cache.h"
+#include "renderer/tracing/skin_table_cache.h"
+#include "skin/core/atomic_file.h"
+#include "skin/core/thread_limit.h"
 #include "skin/effect_plan.h"
+#include "skin/skin_mode.h"
 #include "skin/skin_simulation.h"
 #include "skin/spectral_simulation.h"
-#include "skin/core/thread_limit.h"
-#include "app/enum_option.h"
-#include "skin/skin_mode.h"
 
 namespace hylios {
 namespace {
@@ -39,9 +40,11 @@ struct SpectrumArguments {
   std::string plot;
   std::string measured;
   int threads = 0;
-  double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner; 0: full model
+  double effectTolerance =
+      skin::kDefaultEffectTolerance;  ///< ε of the effect planner; 0: full model
   bool explain = false;
-  skin::SkinMode skinModel = skin::SkinMode::Walk;  ///< Table: rays sampled from the cached exit table (skin/exit_table.h)
+  skin::SkinMode skinModel =
+      skin::SkinMode::Walk;  ///< Table: rays sampled from the cached exit table (skin/exit_table.h)
   std::string estimator = "spectral";  ///< or "per-wavelength" (the analog walk, the reference)
 };
 
@@ -52,7 +55,8 @@ constexpr std::uint64_t kSpectrumPilotRays = 2000;
 
 /// The walk to run at one wavelength: the planned optics and switches, or the full model when
 /// ε = 0 and no plan is to be printed (no pilot then). Also returns the plan when one was made.
-std::optional<skin::EffectPlan> planWavelength(const SpectrumArguments& args, const skin::SkinOptics& optics) {
+std::optional<skin::EffectPlan> planWavelength(const SpectrumArguments& args,
+                                               const skin::SkinOptics& optics) {
   if (args.effectTolerance == 0 && !args.explain) return std::nullopt;
   skin::PlanOptions options;
   options.incidenceDeg = {args.angleDeg};
@@ -66,7 +70,8 @@ void printPlans(const std::vector<std::optional<skin::EffectPlan>>& plans) {
     if (plan) std::cout << (plans.size() <= kMaxExplainTables ? plan->explain() : plan->summary());
 }
 
-std::string formatCsv(const std::vector<double>& wavelengths, const std::vector<skin::SkinTally>& tallies,
+std::string formatCsv(const std::vector<double>& wavelengths,
+                      const std::vector<skin::SkinTally>& tallies,
                       const std::vector<std::optional<skin::EffectPlan>>& plans) {
   std::ostringstream csv;
   csv << "wavelength_nm,reflectance,reflectance_stderr,surface_reflectance,subsurface_reflectance,"
@@ -97,8 +102,8 @@ std::string formatCsv(const std::vector<double>& wavelengths, const std::vector<
 }
 
 void plotSpectrum(const SpectrumArguments& args, const std::string& specimenName,
-                  const std::vector<double>& wavelengths, const std::vector<skin::SkinTally>& tallies,
-                  const MeasuredSpectrum* measured) {
+                  const std::vector<double>& wavelengths,
+                  const std::vector<skin::SkinTally>& tallies, const MeasuredSpectrum* measured) {
   PlotSeries total{"total reflectance ± 1 s.e.", wavelengths, {}, {}, ""};
   PlotSeries surface{"surface", wavelengths, {}, {}, "lines lw 1 dt 2"};
   PlotSeries subsurface{"subsurface", wavelengths, {}, {}, "lines lw 1 dt 3"};
@@ -109,14 +114,20 @@ void plotSpectrum(const SpectrumArguments& args, const std::string& specimenName
     subsurface.y.push_back(t.subsurfaceReflectance().mean);
   }
   PlotPanel panel{"", "wavelength (nm)", "reflectance", false, {total, surface, subsurface}};
-  if (measured) panel.series.push_back({"measured: " + measured->label, measured->wavelengthNm, measured->value, {}, "lines lw 2 lc rgb 'black'"});
+  if (measured)
+    panel.series.push_back({"measured: " + measured->label,
+                            measured->wavelengthNm,
+                            measured->value,
+                            {},
+                            "lines lw 2 lc rgb 'black'"});
   std::ostringstream title;
-  title << "HyLIoS " << specimenName << ", incidence " << args.angleDeg << "°, " << args.rays << " rays per wavelength";
+  title << "HyLIoS " << specimenName << ", incidence " << args.angleDeg << "°, " << args.rays
+        << " rays per wavelength";
   plotPanels(args.plot, title.str(), {panel}, 1, 1100, 650);
 }
 
-/// Table mode: `args.rays` rays sampled from the exit table of `walk` (ExitTableCache::shared(), the
-/// renderer's table settings), ray i on Rng(seed, wavelengthStream(λ), i) like the walk.
+/// Table mode: `args.rays` rays sampled from the exit table of `walk` (ExitTableCache::shared(),
+/// the renderer's table settings), ray i on Rng(seed, wavelengthStream(λ), i) like the walk.
 skin::SkinTally tableTally(const skin::SkinWalk& walk, const SpectrumArguments& args) {
   const auto table = ExitTableCache::shared().get(walk, SkinTableCache::renderSettings());
   const skin::Vec3 incident = skin::incidentDirection(args.angleDeg);
@@ -137,14 +148,17 @@ std::string measuredFile(const std::string& measured) {
 
 void runSpectrum(const SpectrumArguments& args) {
   checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
-               {inputFile("--specimen", args.specimen.specimen), inputFile("--measured", measuredFile(args.measured))});
+               {inputFile("--specimen", args.specimen.specimen),
+                inputFile("--measured", measuredFile(args.measured))});
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   const std::vector<double> wavelengths = parseWavelengthList(args.wavelengths);
   std::unique_ptr<MeasuredSpectrum> measured;
-  if (!args.measured.empty()) measured = std::make_unique<MeasuredSpectrum>(loadMeasuredSpectrum(args.measured));
-  std::vector<skin::SkinOptics> optics;  // computed first, so a bad wavelength fails before any walk
+  if (!args.measured.empty())
+    measured = std::make_unique<MeasuredSpectrum>(loadMeasuredSpectrum(args.measured));
+  std::vector<skin::SkinOptics>
+      optics;  // computed first, so a bad wavelength fails before any walk
   for (double w : wavelengths) optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
   skin::WalkRunOptions run;
   run.incidenceDeg = args.angleDeg;
@@ -163,8 +177,9 @@ void runSpectrum(const SpectrumArguments& args) {
       skin::WalkRunOptions planned = run;
       if (plans[i]) planned.walk = plans[i]->walk;
       const skin::SkinOptics& walked = plans[i] ? plans[i]->optics : optics[i];
-      tallies[i] = args.skinModel == skin::SkinMode::Table ? tableTally(skin::SkinWalk(walked, planned.walk), args)
-                                             : skin::simulateSkin(walked, planned);
+      tallies[i] = args.skinModel == skin::SkinMode::Table
+                       ? tableTally(skin::SkinWalk(walked, planned.walk), args)
+                       : skin::simulateSkin(walked, planned);
       progress.advance();
     });
   }
@@ -176,7 +191,8 @@ void runSpectrum(const SpectrumArguments& args) {
     for (const auto& t : tallies) model.push_back(t.reflectance().mean);
     std::size_t compared = 0;
     const double rms = rmsDifference(wavelengths, model, *measured, &compared);
-    std::cout << "RMS difference to '" << measured->label << "': " << rms << " over " << compared << " wavelengths\n";
+    std::cout << "RMS difference to '" << measured->label << "': " << rms << " over " << compared
+              << " wavelengths\n";
   }
   if (!args.plot.empty()) plotSpectrum(args, specimen.name, wavelengths, tallies, measured.get());
 }
@@ -185,29 +201,42 @@ void runSpectrum(const SpectrumArguments& args) {
 
 void registerSpectrumCommand(CLI::App& app) {
   auto args = std::make_shared<SpectrumArguments>();
-  CLI::App* command = app.add_subcommand("spectrum", "Total hemispherical reflectance of a specimen over wavelengths (CSV, optional plot)");
+  CLI::App* command = app.add_subcommand(
+      "spectrum",
+      "Total hemispherical reflectance of a specimen over wavelengths (CSV, optional plot)");
   addSpecimenOptions(*command, args->specimen);
-  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")->check(finiteRange(0.0, 89.999));
+  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
+      ->check(finiteRange(0.0, 89.999));
   command->add_option("--wavelengths", args->wavelengths, "start:stop:step or a comma list, nm");
-  command->add_option("--rays", args->rays, "Rays per wavelength")->check(unsignedRange(1, std::uint64_t{1} << 40));
-  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
+  command->add_option("--rays", args->rays, "Rays per wavelength")
+      ->check(unsignedRange(1, std::uint64_t{1} << 40));
+  command
+      ->add_option("--seed", args->seed,
+                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
       ->check(seedRange());
   command->add_option("--out", args->out, "CSV file to write")->required();
   command->add_option("--plot", args->plot, "PNG plot to write");
-  command->add_option("--measured", args->measured, "FILE:COLUMN of a measured curve to compare with (RMS printed)");
-  addEnumOption(*command, "--skin-model", args->skinModel, skin::kSkinModeNames,
-                      "walk (exact HyLIoS walk per ray) or table (rays sampled from exit tables cached in "
-                      "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)");
+  command->add_option("--measured", args->measured,
+                      "FILE:COLUMN of a measured curve to compare with (RMS printed)");
+  addEnumOption(
+      *command, "--skin-model", args->skinModel, skin::kSkinModeNames,
+      "walk (exact HyLIoS walk per ray) or table (rays sampled from exit tables cached in "
+      "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)");
   addEstimatorOption(*command, args->estimator);
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  command->add_option("--epsilon", args->effectTolerance,
-                      "Effect-planner tolerance (per-wavelength estimator and table mode): processes whose summed "
-                      "optical depth stays below it are skipped, bounding the change of R by it (0 = simulate "
-                      "everything; default 1e-3)")
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  command
+      ->add_option(
+          "--epsilon", args->effectTolerance,
+          "Effect-planner tolerance (per-wavelength estimator and table mode): processes whose "
+          "summed "
+          "optical depth stays below it are skipped, bounding the change of R by it (0 = simulate "
+          "everything; default 1e-3)")
       ->check(finiteRange(0.0, 1.0));
-  command->add_flag("--explain", args->explain,
-                    "Print each wavelength's effect plan (process, layer, optical depth, kept or skipped; "
-                    "one line per wavelength beyond 8)");
+  command->add_flag(
+      "--explain", args->explain,
+      "Print each wavelength's effect plan (process, layer, optical depth, kept or skipped; "
+      "one line per wavelength beyond 8)");
   command->callback([args] { runSpectrum(*args); });
 }
 

@@ -22,15 +22,22 @@ struct ValidateArguments {
 
 void registerValidateCommand(CLI::App& app) {
   auto args = std::make_shared<ValidateArguments>();
-  CLI::App* command = app.add_subcommand(
-      "validate", "Run every comparison with measured skin (Figs. 7, 8, 10, 11); writes DIR/validation.md and PNG plots");
-  command->add_option("--out", args->out, "Folder for validation.md and its plots")->capture_default_str();
-  command->add_option("--rays", args->rays, "Rays per wavelength (the visible BRDF uses a fifth per wavelength)")
+  CLI::App* command = app.add_subcommand("validate",
+                                         "Run every comparison with measured skin (Figs. 7, 8, 10, "
+                                         "11); writes DIR/validation.md and PNG plots");
+  command->add_option("--out", args->out, "Folder for validation.md and its plots")
+      ->capture_default_str();
+  command
+      ->add_option("--rays", args->rays,
+                   "Rays per wavelength (the visible BRDF uses a fifth per wavelength)")
       ->check(unsignedRange(100, std::uint64_t{1} << 36))
       ->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed in [0, 2^63-1] (same seed, same report at any thread count)")
+  command
+      ->add_option("--seed", args->seed,
+                   "Random seed in [0, 2^63-1] (same seed, same report at any thread count)")
       ->check(seedRange());
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
   command->callback([args] {
     const ThreadLimit limit(args->threads);
     ValidationOptions options;

@@ -10,6 +10,7 @@
 #include "app/measured_spectrum.h"
 #include "renderer/scene/data_paths.h"
 #include "skin/core/atomic_file.h"
+#include "skin/core/constants.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_simulation.h"
@@ -17,11 +18,9 @@
 #include "skin/specimen_fit.h"
 #include "skin/specimen_writer.h"
 #include "skin/spectral_simulation.h"
-#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
-
 
 std::string fmt(const char* format, double v) {
   char buffer[64];
@@ -36,10 +35,13 @@ std::vector<double> grid(double from, double to, double step) {
 }
 
 /// The estimate of an in-plane cut nearest to a signed angle.
-skin::Estimate cutAt(const skin::InPlaneCut& cut, const std::vector<skin::Estimate>& values, double signedDeg) {
+skin::Estimate cutAt(const skin::InPlaneCut& cut, const std::vector<skin::Estimate>& values,
+                     double signedDeg) {
   std::size_t best = 0;
   for (std::size_t i = 1; i < cut.signedPolarDeg.size(); ++i)
-    if (std::fabs(cut.signedPolarDeg[i] - signedDeg) < std::fabs(cut.signedPolarDeg[best] - signedDeg)) best = i;
+    if (std::fabs(cut.signedPolarDeg[i] - signedDeg) <
+        std::fabs(cut.signedPolarDeg[best] - signedDeg))
+      best = i;
   return values[best];
 }
 
@@ -48,9 +50,11 @@ double nearNormal(const skin::InPlaneCut& cut, const std::vector<skin::Estimate>
   return 0.5 * (cutAt(cut, values, -1e-6).mean + cutAt(cut, values, 1e-6).mean);
 }
 
-skin::ReflectionDistribution distribution(const skin::Specimen& specimen, const skin::SpectralDatabase& spectra,
-                                          const std::vector<double>& wavelengths, double incidenceDeg,
-                                          std::uint64_t rays, std::uint64_t seed) {
+skin::ReflectionDistribution distribution(const skin::Specimen& specimen,
+                                          const skin::SpectralDatabase& spectra,
+                                          const std::vector<double>& wavelengths,
+                                          double incidenceDeg, std::uint64_t rays,
+                                          std::uint64_t seed) {
   skin::WalkRunOptions run;
   run.incidenceDeg = incidenceDeg;
   run.rays = rays;
@@ -59,12 +63,13 @@ skin::ReflectionDistribution distribution(const skin::Specimen& specimen, const 
   run.tally.azimuthBins = 36;
   std::vector<skin::ReflectionDistribution> per;
   for (double w : wavelengths)
-    per.push_back(skin::reflectionDistribution(skin::simulateSkin(skin::computeSkinOptics(specimen, spectra, w), run)));
+    per.push_back(skin::reflectionDistribution(
+        skin::simulateSkin(skin::computeSkinOptics(specimen, spectra, w), run)));
   return skin::meanOverWavelengths(per);
 }
 
-PlotSeries cutSeries(const std::string& title, const skin::InPlaneCut& cut, const std::vector<skin::Estimate>& values,
-                     const std::string& style) {
+PlotSeries cutSeries(const std::string& title, const skin::InPlaneCut& cut,
+                     const std::vector<skin::Estimate>& values, const std::string& style) {
   PlotSeries s{title, cut.signedPolarDeg, {}, {}, style};
   for (const auto& e : values) {
     s.y.push_back(e.mean);
@@ -85,9 +90,11 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 }  // namespace
 
-CurveComparison compareWithMeasured(const std::string& specimenName, const std::filesystem::path& ncsuFile,
-                                    const std::string& column, const std::vector<double>& wavelengths,
-                                    double incidenceDeg, std::uint64_t rays, std::uint64_t seed,
+CurveComparison compareWithMeasured(const std::string& specimenName,
+                                    const std::filesystem::path& ncsuFile,
+                                    const std::string& column,
+                                    const std::vector<double>& wavelengths, double incidenceDeg,
+                                    std::uint64_t rays, std::uint64_t seed,
                                     const skin::SpectralDatabase& spectra) {
   const MeasuredSpectrum measured = loadMeasuredSpectrum(ncsuFile.string() + ":" + column);
   const skin::Specimen specimen = skin::loadSpecimen(specimenName, specimenDir());
@@ -103,7 +110,8 @@ CurveComparison compareWithMeasured(const std::string& specimenName, const std::
       c.measured.push_back(measured.at(w));
       optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
     }
-  if (optics.empty()) throw std::runtime_error("measured curve " + column + " covers none of the wavelengths");
+  if (optics.empty())
+    throw std::runtime_error("measured curve " + column + " covers none of the wavelengths");
   skin::SpectralRunOptions run;
   run.incidenceDeg = incidenceDeg;
   run.rays = rays;
@@ -132,7 +140,8 @@ std::string runValidation(const ValidationOptions& options) {
   const std::filesystem::path images = options.outDir / "validation";
   std::filesystem::create_directories(images);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
-  const std::filesystem::path ncsu = dataRoot() / "tests" / "data" / "validation" / "ncsu_vrhel1994_skin.csv";
+  const std::filesystem::path ncsu =
+      dataRoot() / "tests" / "data" / "validation" / "ncsu_vrhel1994_skin.csv";
   const std::uint64_t rays = options.rays, seed = options.seed;
   std::vector<Check> checks;
 
@@ -151,13 +160,19 @@ std::string runValidation(const ValidationOptions& options) {
         model.y.push_back(e.mean);
         model.yError.push_back(2 * e.standardError);
       }
-      PlotSeries meas{"measured NCSU " + c.measuredLabel, c.wavelengthNm, c.measured, {},
+      PlotSeries meas{"measured NCSU " + c.measuredLabel,
+                      c.wavelengthNm,
+                      c.measured,
+                      {},
                       "linespoints lw 2 pt 7 ps 0.6 lc rgb 'black'"};
-      panels.push_back({c.specimen + " vs " + c.measuredColumn + ": RMS " + fmt("%.4f", c.rms), "wavelength (nm)",
-                        "reflectance (45° incidence)", false, {model, meas}});
+      panels.push_back({c.specimen + " vs " + c.measuredColumn + ": RMS " + fmt("%.4f", c.rms),
+                        "wavelength (nm)",
+                        "reflectance (45° incidence)",
+                        false,
+                        {model, meas}});
     }
-    plotPanels(images / "fig7_ncsu.png", "Paper Fig. 7: HyLIoS vs NCSU skin (Vrhel et al. 1994)", panels, 2,
-               1400, 600);
+    plotPanels(images / "fig7_ncsu.png", "Paper Fig. 7: HyLIoS vs NCSU skin (Vrhel et al. 1994)",
+               panels, 2, 1400, 600);
   }
 
   // ---- Fig. 8: S2 epidermis at 302 nm ----
@@ -171,7 +186,8 @@ std::string runValidation(const ValidationOptions& options) {
   epi.walk.belowRefractiveIndex = optics302[skin::Layer::StratumBasale].refractiveIndex;
   epi.tally.polarBins = 18;
   epi.tally.azimuthBins = 1;
-  const skin::TransmissionProfile profile = skin::transmissionProfile(skin::simulateSkin(optics302, epi));
+  const skin::TransmissionProfile profile =
+      skin::transmissionProfile(skin::simulateSkin(optics302, epi));
   double hwhm = 90;
   for (std::size_t i = 1; i < profile.relativeToNormal.size(); ++i) {
     const double a = profile.relativeToNormal[i - 1].mean, b = profile.relativeToNormal[i].mean;
@@ -184,18 +200,26 @@ std::string runValidation(const ValidationOptions& options) {
   }
   const auto relAt = [&](double deg) {
     for (std::size_t i = 0; i < profile.polarLowerDeg.size(); ++i)
-      if (deg >= profile.polarLowerDeg[i] && deg < profile.polarUpperDeg[i]) return profile.relativeToNormal[i];
+      if (deg >= profile.polarLowerDeg[i] && deg < profile.polarUpperDeg[i])
+        return profile.relativeToNormal[i];
     return skin::Estimate{};
   };
   const skin::Estimate rel30 = relAt(32.5), rel60 = relAt(62.5);
-  checks.push_back({"8", "half width at half maximum of the transmitted intensity per sr",
-                    fmt("%.1f°", hwhm), "60° for a diffuse (cos θ) profile; BVDL84: strongly forward", checkMark(hwhm < 60)});
-  checks.push_back({"8", "intensity per sr at 30–35° / at the normal", fmt("%.3f", rel30.mean) + " ± " + fmt("%.3f", rel30.standardError),
-                    "cos 32.5° = 0.843 (diffuse)", checkMark(rel30.mean < std::cos(32.5 * kPi / 180))});
-  checks.push_back({"8", "intensity per sr at 60–65° / at the normal", fmt("%.3f", rel60.mean) + " ± " + fmt("%.3f", rel60.standardError),
-                    "cos 62.5° = 0.462 (diffuse)", checkMark(rel60.mean < std::cos(62.5 * kPi / 180))});
-  checks.push_back({"8", "epidermis transmittance at 302 nm", fmt("%.4f", profile.transmittance.mean) + " ± " +
-                    fmt("%.4f", profile.transmittance.standardError), "no measured value in the project", "—"});
+  checks.push_back(
+      {"8", "half width at half maximum of the transmitted intensity per sr", fmt("%.1f°", hwhm),
+       "60° for a diffuse (cos θ) profile; BVDL84: strongly forward", checkMark(hwhm < 60)});
+  checks.push_back({"8", "intensity per sr at 30–35° / at the normal",
+                    fmt("%.3f", rel30.mean) + " ± " + fmt("%.3f", rel30.standardError),
+                    "cos 32.5° = 0.843 (diffuse)",
+                    checkMark(rel30.mean < std::cos(32.5 * kPi / 180))});
+  checks.push_back({"8", "intensity per sr at 60–65° / at the normal",
+                    fmt("%.3f", rel60.mean) + " ± " + fmt("%.3f", rel60.standardError),
+                    "cos 62.5° = 0.462 (diffuse)",
+                    checkMark(rel60.mean < std::cos(62.5 * kPi / 180))});
+  checks.push_back({"8", "epidermis transmittance at 302 nm",
+                    fmt("%.4f", profile.transmittance.mean) + " ± " +
+                        fmt("%.4f", profile.transmittance.standardError),
+                    "no measured value in the project", "—"});
   std::cout << "validate: Fig. 8 (302 nm epidermis) " << fmt("%.1f", seconds(t0)) << " s\n";
   if (options.plots) {
     PlotSeries model{"HyLIoS S2 epidermis ± 2σ", {}, {}, {}, "linespoints lw 2 pt 7 ps 0.6"};
@@ -210,8 +234,14 @@ std::string runValidation(const ValidationOptions& options) {
       diffuse.y.push_back(std::cos(d * kPi / 180));
     }
     plotPanels(images / "fig8_forward_profile.png",
-               "Paper Fig. 8: light transmitted through the S2 epidermis, 302 nm, normal incidence (no measured data in the project)",
-               {{"", "angle from the inward normal (°)", "intensity per sr / at the normal", false, {model, diffuse}}}, 1, 1000, 600);
+               "Paper Fig. 8: light transmitted through the S2 epidermis, 302 nm, normal incidence "
+               "(no measured data in the project)",
+               {{"",
+                 "angle from the inward normal (°)",
+                 "intensity per sr / at the normal",
+                 false,
+                 {model, diffuse}}},
+               1, 1000, 600);
   }
 
   // ---- Fig. 10: S1 visible BRDF at 0° and 60° ----
@@ -224,22 +254,28 @@ std::string runValidation(const ValidationOptions& options) {
   {
     const auto& c = at0.inPlanePerSteradian;
     const double normal = nearNormal(c, c.total);
-    const double ratio = 0.5 * (cutAt(c, c.subsurface, 62.5).mean + cutAt(c, c.subsurface, -62.5).mean) /
+    const double ratio = 0.5 *
+                         (cutAt(c, c.subsurface, 62.5).mean + cutAt(c, c.subsurface, -62.5).mean) /
                          nearNormal(c, c.subsurface);
-    const double asym = std::fabs(cutAt(c, c.total, 42.5).mean - cutAt(c, c.total, -42.5).mean) / normal;
-    checks.push_back({"10", "0° incidence: subsurface per sr at ±62.5° / at the normal", fmt("%.3f", ratio),
-                      "cos 62.5° = 0.462 for a Lambertian reflector (MWL99: near-Lambertian); exit Fresnel "
-                      "transmission lowers it at grazing angles",
-                      "— (shape only, no data)"});
-    checks.push_back({"10", "0° incidence: \\|left − right\\| of the total at ±42.5° / at the normal", fmt("%.3f", asym),
-                      "0 (symmetric)", checkMark(asym < 0.05)});
+    const double asym =
+        std::fabs(cutAt(c, c.total, 42.5).mean - cutAt(c, c.total, -42.5).mean) / normal;
+    checks.push_back(
+        {"10", "0° incidence: subsurface per sr at ±62.5° / at the normal", fmt("%.3f", ratio),
+         "cos 62.5° = 0.462 for a Lambertian reflector (MWL99: near-Lambertian); exit Fresnel "
+         "transmission lowers it at grazing angles",
+         "— (shape only, no data)"});
+    checks.push_back({"10",
+                      "0° incidence: \\|left − right\\| of the total at ±42.5° / at the normal",
+                      fmt("%.3f", asym), "0 (symmetric)", checkMark(asym < 0.05)});
     const auto& d = at60.inPlanePerSteradian;
     const double forward = cutAt(d, d.total, 62.5).mean, back = cutAt(d, d.total, -62.5).mean;
     checks.push_back({"10", "60° incidence: total per sr at +62.5° (specular side) / at −62.5°",
-                      fmt("%.3f", forward / back), "> 1: forward (specular) lobe, MWL99", checkMark(forward > back)});
-    checks.push_back({"10", "visible total reflectance R_t at 0° / 60°",
-                      fmt("%.4f", at0.totalReflectance.mean) + " / " + fmt("%.4f", at60.totalReflectance.mean),
-                      "no measured value in the project", "—"});
+                      fmt("%.3f", forward / back), "> 1: forward (specular) lobe, MWL99",
+                      checkMark(forward > back)});
+    checks.push_back(
+        {"10", "visible total reflectance R_t at 0° / 60°",
+         fmt("%.4f", at0.totalReflectance.mean) + " / " + fmt("%.4f", at60.totalReflectance.mean),
+         "no measured value in the project", "—"});
   }
   std::cout << "validate: Fig. 10 (visible BRDF) " << fmt("%.1f", seconds(t0)) << " s\n";
   if (options.plots) {
@@ -247,13 +283,17 @@ std::string runValidation(const ValidationOptions& options) {
     for (const auto* dist : {&at0, &at60}) {
       const auto& c = dist->inPlanePerSteradian;
       panels.push_back({dist == &at0 ? "incidence 0°" : "incidence 60°",
-                        "signed reflection angle (°): < 0 toward the source", "BRDF·cos θr (per sr), 380–780 nm mean", false,
+                        "signed reflection angle (°): < 0 toward the source",
+                        "BRDF·cos θr (per sr), 380–780 nm mean",
+                        false,
                         {cutSeries("surface ± 2σ", c, c.surface, "lines lw 1 dt 2"),
                          cutSeries("subsurface ± 2σ", c, c.subsurface, "lines lw 1 dt 3"),
                          cutSeries("total ± 2σ", c, c.total, "linespoints lw 2 pt 7 ps 0.5")}});
     }
     plotPanels(images / "fig10_brdf.png",
-               "Paper Fig. 10: S1 visible BRDF in the plane of incidence (no measured data in the project)", panels, 2, 1400, 600);
+               "Paper Fig. 10: S1 visible BRDF in the plane of incidence (no measured data in the "
+               "project)",
+               panels, 2, 1400, 600);
   }
 
   // ---- Fig. 11: S1 at 45°, 365 vs 1100 nm ----
@@ -263,7 +303,8 @@ std::string runValidation(const ValidationOptions& options) {
   {
     const double dUv = uv.subsurfaceReflectance.mean / uv.totalReflectance.mean;
     const double dIr = ir.subsurfaceReflectance.mean / ir.totalReflectance.mean;
-    checks.push_back({"11", "subsurface share R_d/R_t at 365 nm / 1100 nm", fmt("%.3f", dUv) + " / " + fmt("%.3f", dIr),
+    checks.push_back({"11", "subsurface share R_d/R_t at 365 nm / 1100 nm",
+                      fmt("%.3f", dUv) + " / " + fmt("%.3f", dIr),
                       "IR more diffuse than UV [AP82, HASS10]", checkMark(dIr > dUv)});
     const auto peak = [](const skin::ReflectionDistribution& d) {
       const auto& c = d.inPlanePerSteradian;
@@ -273,22 +314,26 @@ std::string runValidation(const ValidationOptions& options) {
     };
     const double pUv = peak(uv), pIr = peak(ir);
     checks.push_back({"11", "peak / normal of the in-plane total per sr at 365 nm / 1100 nm",
-                      fmt("%.3f", pUv) + " / " + fmt("%.3f", pIr), "lower in the IR (more diffuse)", checkMark(pIr < pUv)});
+                      fmt("%.3f", pUv) + " / " + fmt("%.3f", pIr), "lower in the IR (more diffuse)",
+                      checkMark(pIr < pUv)});
   }
   std::cout << "validate: Fig. 11 (365 / 1100 nm) " << fmt("%.1f", seconds(t0)) << " s\n";
   if (options.plots) {
     std::vector<PlotPanel> panels;
     for (const auto* dist : {&uv, &ir}) {
       const auto& c = dist->inPlanePerSteradian;
-      panels.push_back({dist == &uv ? "365 nm" : "1100 nm", "signed reflection angle (°): < 0 toward the source",
-                        "BRDF·cos θr (per sr)", false,
+      panels.push_back({dist == &uv ? "365 nm" : "1100 nm",
+                        "signed reflection angle (°): < 0 toward the source",
+                        "BRDF·cos θr (per sr)",
+                        false,
                         {cutSeries("R_s ± 2σ", c, c.surface, "lines lw 1 dt 2"),
                          cutSeries("R_d ± 2σ", c, c.subsurface, "lines lw 1 dt 3"),
                          cutSeries("R_t ± 2σ", c, c.total, "linespoints lw 2 pt 7 ps 0.5")}});
     }
     plotPanels(images / "fig11_uv_ir.png",
-               "Paper Fig. 11: S1 at 45°, UV vs IR in the plane of incidence (no measured data in the project)", panels, 2,
-               1400, 600);
+               "Paper Fig. 11: S1 at 45°, UV vs IR in the plane of incidence (no measured data in "
+               "the project)",
+               panels, 2, 1400, 600);
   }
 
   // ---- S2 fitted to object 113 (hylios fit), next to Table 1 ----
@@ -310,8 +355,10 @@ std::string runValidation(const ValidationOptions& options) {
   const CurveComparison fitted = [&] {
     // The fitted specimen evaluated like the Table 1 ones (exact melanosomes, another seed).
     const std::filesystem::path tmp = images / "S2_fitted_obj113.toml";
-    writeTextAtomically(tmp, skin::formatSpecimenToml(fit.specimen, "S2 fitted to NCSU obj113 by hylios validate"));
-    CurveComparison c = compareWithMeasured(tmp.string(), ncsu, "obj113", visible, 45, rays, seed + 1, spectra);
+    writeTextAtomically(
+        tmp, skin::formatSpecimenToml(fit.specimen, "S2 fitted to NCSU obj113 by hylios validate"));
+    CurveComparison c =
+        compareWithMeasured(tmp.string(), ncsu, "obj113", visible, 45, rays, seed + 1, spectra);
     return c;
   }();
   std::cout << "validate: S2 fit to obj113 " << fmt("%.1f", seconds(t0)) << " s\n";
@@ -320,51 +367,65 @@ std::string runValidation(const ValidationOptions& options) {
   std::ostringstream md;
   md << "# Validation against measured skin\n\n"
      << "Written by `hylios validate --rays " << rays << " --seed " << seed
-     << "` (issue 14); this file is its output. Monte Carlo errors (σ) are the walk's standard errors; bands in the "
+     << "` (issue 14); this file is its output. Monte Carlo errors (σ) are the walk's standard "
+        "errors; bands in the "
         "plots are ±2σ. Rerun it after any model change.\n\n"
      << "## Measured curves\n\n"
-     << "| comparison | data | wavelengths | RMS | max \\|error\\| | worst at | mean error (model − measured) | MC σ of the RMS |\n"
+     << "| comparison | data | wavelengths | RMS | max \\|error\\| | worst at | mean error (model "
+        "− measured) | MC σ of the RMS |\n"
      << "|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : curves)
-    md << "| " << c.specimen << " vs NCSU " << c.measuredColumn << ", " << c.incidenceDeg << "° (Fig. 7) | Vrhel et al. 1994, `"
-       << c.measuredLabel << "` | " << c.wavelengthNm.front() << "–" << c.wavelengthNm.back() << " nm, "
-       << c.wavelengthNm.size() << " | " << fmt("%.4f", c.rms) << " | " << fmt("%.4f", c.maxAbsError) << " | "
-       << c.worstWavelengthNm << " nm | " << fmt("%+.4f", c.meanError) << " | ≤ " << fmt("%.4f", c.noiseRms) << " |\n";
-  md << "| S2 fitted to obj113 (`hylios fit`, below), 45° | same | 400–700 nm, " << fitted.wavelengthNm.size() << " | "
-     << fmt("%.4f", fitted.rms) << " | " << fmt("%.4f", fitted.maxAbsError) << " | " << fitted.worstWavelengthNm
-     << " nm | " << fmt("%+.4f", fitted.meanError) << " | ≤ " << fmt("%.4f", fitted.noiseRms) << " |\n";
+    md << "| " << c.specimen << " vs NCSU " << c.measuredColumn << ", " << c.incidenceDeg
+       << "° (Fig. 7) | Vrhel et al. 1994, `" << c.measuredLabel << "` | " << c.wavelengthNm.front()
+       << "–" << c.wavelengthNm.back() << " nm, " << c.wavelengthNm.size() << " | "
+       << fmt("%.4f", c.rms) << " | " << fmt("%.4f", c.maxAbsError) << " | " << c.worstWavelengthNm
+       << " nm | " << fmt("%+.4f", c.meanError) << " | ≤ " << fmt("%.4f", c.noiseRms) << " |\n";
+  md << "| S2 fitted to obj113 (`hylios fit`, below), 45° | same | 400–700 nm, "
+     << fitted.wavelengthNm.size() << " | " << fmt("%.4f", fitted.rms) << " | "
+     << fmt("%.4f", fitted.maxAbsError) << " | " << fitted.worstWavelengthNm << " nm | "
+     << fmt("%+.4f", fitted.meanError) << " | ≤ " << fmt("%.4f", fitted.noiseRms) << " |\n";
   md << "\nModel: spectral walk (exact melanosomes), " << rays
-     << " rays per wavelength. The project's goal is RMS ≤ 0.03 for each. `hylios fit` fits specimen quantities to "
+     << " rays per wavelength. The project's goal is RMS ≤ 0.03 for each. `hylios fit` fits "
+        "specimen quantities to "
         "these curves (README).\n\n![Fig. 7](validation/fig7_ncsu.png)\n\n";
   md << "## S2 fitted to NCSU object 113, next to Table 1\n\n"
      << "`hylios fit` (bounded Levenberg–Marquardt, common random numbers; bounds and sources in "
         "docs/interpretations.md) with 5 free quantities, "
      << std::max<std::uint64_t>(1000, rays / 5) << " rays per wavelength and evaluation: RMS "
      << fmt("%.4f", fit.startRms) << " → " << fmt("%.4f", fit.rms) << " in " << fit.evaluations
-     << " curve evaluations (" << fit.stopReason << "). The fitted specimen re-evaluated with the exact walk and "
-        "another seed is the last row of the table above; it is written to `validation/S2_fitted_obj113.toml`.\n\n"
+     << " curve evaluations (" << fit.stopReason
+     << "). The fitted specimen re-evaluated with the exact walk and "
+        "another seed is the last row of the table above; it is written to "
+        "`validation/S2_fitted_obj113.toml`.\n\n"
      << "| quantity | Table 1 (S2) | fitted ± 1σ | bounds |\n|---|---|---|---|\n";
   for (const auto& q : fit.quantities)
-    md << "| " << q.quantity.name << " | " << fmt("%.4g", q.start) << " " << q.quantity.unit << " | "
-       << fmt("%.4g", q.value) << " " << q.quantity.unit
+    md << "| " << q.quantity.name << " | " << fmt("%.4g", q.start) << " " << q.quantity.unit
+       << " | " << fmt("%.4g", q.value) << " " << q.quantity.unit
        << (q.atBound ? " (at a bound)"
-                     : q.uncertainty > q.quantity.upper - q.quantity.lower
-                           ? " (unconstrained: σ exceeds the bound range)"
-                           : " ± " + fmt("%.2g", q.uncertainty) + " " + q.quantity.unit)
+           : q.uncertainty > q.quantity.upper - q.quantity.lower
+               ? " (unconstrained: σ exceeds the bound range)"
+               : " ± " + fmt("%.2g", q.uncertainty) + " " + q.quantity.unit)
        << " | " << fmt("%g", q.quantity.lower) << "–" << fmt("%g", q.quantity.upper) << " "
        << q.quantity.unit << " |\n";
-  md << "\nA fit explains the curve with the freed quantities; it does not say the model's other choices are "
-        "right. Water reduction is barely constrained by 400–700 nm: it ends at a bound or with a σ wider than its range. Melanosome and colloidal melanin trade against each other (both are melanin), so their σ are large and their split moves with the seed and ray count.\n\n";
+  md << "\nA fit explains the curve with the freed quantities; it does not say the model's other "
+        "choices are "
+        "right. Water reduction is barely constrained by 400–700 nm: it ends at a bound or with a "
+        "σ wider than its range. Melanosome and colloidal melanin trade against each other (both "
+        "are melanin), so their σ are large and their split moves with the seed and ray count.\n\n";
   md << "## Angular distributions (no measured data in the project)\n\n"
-     << "The project holds no digitised data of Bruls & van der Leun 1984 (Fig. 8) or Marschner et al. 1999 "
-        "(Fig. 10), and Fig. 11 has no measurement. The rows check the behaviour the paper states for them.\n\n"
+     << "The project holds no digitised data of Bruls & van der Leun 1984 (Fig. 8) or Marschner et "
+        "al. 1999 "
+        "(Fig. 10), and Fig. 11 has no measurement. The rows check the behaviour the paper states "
+        "for them.\n\n"
      << "| Fig. | quantity | model | reference | verdict |\n|---|---|---|---|---|\n";
   for (const auto& c : checks)
-    md << "| " << c.figure << " | " << c.quantity << " | " << c.model << " | " << c.reference << " | " << c.verdict << " |\n";
+    md << "| " << c.figure << " | " << c.quantity << " | " << c.model << " | " << c.reference
+       << " | " << c.verdict << " |\n";
   md << "\nFig. 8: S2 epidermis (stratum corneum to basale), bottom index matched, " << rays
      << " rays. Fig. 10: S1, mean of 380–780 nm every 20 nm, " << bandRays
      << " rays per wavelength. Fig. 11: S1, 45°, " << rays << " rays.\n\n"
-     << "![Fig. 8](validation/fig8_forward_profile.png)\n\n![Fig. 10](validation/fig10_brdf.png)\n\n![Fig. 11](validation/fig11_uv_ir.png)\n";
+     << "![Fig. 8](validation/fig8_forward_profile.png)\n\n![Fig. "
+        "10](validation/fig10_brdf.png)\n\n![Fig. 11](validation/fig11_uv_ir.png)\n";
   const std::string text = md.str();
   writeTextAtomically(options.outDir / "validation.md", text);
   return text;

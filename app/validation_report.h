@@ -1,12 +1,14 @@
 // `hylios validate`: every comparison the project has data for, computed and written as a
 // Markdown report with plots (issue 14). The comparisons:
 //
-// | id     | what                                                                 | data                           |
+// | id     | what                                                                 | data |
 // |--------|----------------------------------------------------------------------|--------------------------------|
-// | fig7   | S1 vs NCSU object 117 and S2 vs object 113, 45°, 400–700 nm (Fig. 7) | tests/data/validation (Vrhel 1994) |
-// | fig8   | S2 epidermis, 302 nm, normal incidence, transmitted profile (Fig. 8) | none in the project: the paper's claim (forward scattering) is checked |
-// | fig10  | S1 visible BRDF in the plane of incidence at 0° and 60° (Fig. 10)    | none in the project: shape checks |
-// | fig11  | S1 at 45°, 365 nm vs 1100 nm, surface/subsurface/total (Fig. 11)     | none in the project: the paper's claim (IR more diffuse) is checked |
+// | fig7   | S1 vs NCSU object 117 and S2 vs object 113, 45°, 400–700 nm (Fig. 7) |
+// tests/data/validation (Vrhel 1994) | | fig8   | S2 epidermis, 302 nm, normal incidence,
+// transmitted profile (Fig. 8) | none in the project: the paper's claim (forward scattering) is
+// checked | | fig10  | S1 visible BRDF in the plane of incidence at 0° and 60° (Fig. 10)    | none
+// in the project: shape checks | | fig11  | S1 at 45°, 365 nm vs 1100 nm, surface/subsurface/total
+// (Fig. 11)     | none in the project: the paper's claim (IR more diffuse) is checked |
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -25,30 +27,32 @@ struct CurveComparison {
   std::vector<double> wavelengthNm;
   std::vector<skin::Estimate> model;
   std::vector<double> measured;
-  double rms = 0;            ///< of model − measured
-  double maxAbsError = 0;    ///< max |model − measured|
+  double rms = 0;          ///< of model − measured
+  double maxAbsError = 0;  ///< max |model − measured|
   double worstWavelengthNm = 0;
-  double meanError = 0;      ///< mean of model − measured (sign: model brighter > 0)
-  double noiseRms = 0;       ///< sqrt(mean σ²): the RMS's own Monte Carlo uncertainty bound
+  double meanError = 0;  ///< mean of model − measured (sign: model brighter > 0)
+  double noiseRms = 0;   ///< sqrt(mean σ²): the RMS's own Monte Carlo uncertainty bound
 };
 
 /// S1/obj117 or S2/obj113 style comparison over `wavelengths` at `incidenceDeg` with the spectral
 /// walk (exact melanosomes) and `rays` per wavelength; `ncsuFile` is the NCSU CSV.
-CurveComparison compareWithMeasured(const std::string& specimen, const std::filesystem::path& ncsuFile,
-                                    const std::string& column, const std::vector<double>& wavelengths,
-                                    double incidenceDeg, std::uint64_t rays, std::uint64_t seed,
+CurveComparison compareWithMeasured(const std::string& specimen,
+                                    const std::filesystem::path& ncsuFile,
+                                    const std::string& column,
+                                    const std::vector<double>& wavelengths, double incidenceDeg,
+                                    std::uint64_t rays, std::uint64_t seed,
                                     const skin::SpectralDatabase& spectra);
 
 struct ValidationOptions {
   std::filesystem::path outDir;
-  std::uint64_t rays = 100000;   ///< per wavelength for the NCSU curves and the angular figures
+  std::uint64_t rays = 100000;  ///< per wavelength for the NCSU curves and the angular figures
   std::uint64_t seed = 1;
   bool plots = true;
 };
 
 /// Runs every comparison and writes outDir/validation.md and its PNGs under outDir/validation/
-/// (fig7_ncsu.png, fig8_forward_profile.png, fig10_brdf.png, fig11_uv_ir.png). `--out docs` gives the
-/// committed docs/validation.md. Returns the Markdown text.
+/// (fig7_ncsu.png, fig8_forward_profile.png, fig10_brdf.png, fig11_uv_ir.png). `--out docs` gives
+/// the committed docs/validation.md. Returns the Markdown text.
 std::string runValidation(const ValidationOptions& options);
 
 }  // namespace hylios

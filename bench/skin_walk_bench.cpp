@@ -9,36 +9,40 @@
 #include <map>
 #include <string>
 
+#include "skin/core/thread_limit.h"
 #include "skin/layered_slab.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
-#include "skin/core/thread_limit.h"
 
 namespace {
 using namespace hylios::skin;
 
 std::filesystem::path dataRoot() {
   const char* fromEnvironment = std::getenv("HYLIOS_DATA_DIR");
-  return fromEnvironment ? std::filesystem::path(fromEnvironment) : std::filesystem::path(HYLIOS_SOURCE_DIR);
+  return fromEnvironment ? std::filesystem::path(fromEnvironment)
+                         : std::filesystem::path(HYLIOS_SOURCE_DIR);
 }
 
 const SpectralDatabase& spectra() {
-  static const SpectralDatabase database = SpectralDatabase::load(dataRoot() / "assets" / "spectra");
+  static const SpectralDatabase database =
+      SpectralDatabase::load(dataRoot() / "assets" / "spectra");
   return database;
 }
 
 const Specimen& specimen(const std::string& name) {
   static std::map<std::string, Specimen> loaded;
   auto it = loaded.find(name);
-  if (it == loaded.end()) it = loaded.emplace(name, loadSpecimen(name, dataRoot() / "scenes" / "specimens")).first;
+  if (it == loaded.end())
+    it = loaded.emplace(name, loadSpecimen(name, dataRoot() / "scenes" / "specimens")).first;
   return it->second;
 }
 
 /// Rays per iteration: enough that one iteration is a few milliseconds at the slowest wavelength.
 constexpr std::uint64_t kRaysPerIteration = 8192;
 
-void skinWalkWith(benchmark::State& state, const std::string& specimenName, bool tabulatedMelanosomes) {
+void skinWalkWith(benchmark::State& state, const std::string& specimenName,
+                  bool tabulatedMelanosomes) {
   const hylios::ThreadLimit oneThread(1);
   const double wavelengthNm = static_cast<double>(state.range(0));
   const SkinOptics optics = computeSkinOptics(specimen(specimenName), spectra(), wavelengthNm);
@@ -82,13 +86,33 @@ void mcmlThreeLayerSlab(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK_CAPTURE(skinWalk, S1, std::string("S1"))
-    ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+    ->Arg(365)
+    ->Arg(550)
+    ->Arg(1100)
+    ->Arg(1650)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(skinWalk, S4, std::string("S4"))
-    ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+    ->Arg(365)
+    ->Arg(550)
+    ->Arg(1100)
+    ->Arg(1650)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(skinWalkTabulated, S1, std::string("S1"))
-    ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+    ->Arg(365)
+    ->Arg(550)
+    ->Arg(1100)
+    ->Arg(1650)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(skinWalkTabulated, S4, std::string("S4"))
-    ->Arg(365)->Arg(550)->Arg(1100)->Arg(1650)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+    ->Arg(365)
+    ->Arg(550)
+    ->Arg(1100)
+    ->Arg(1650)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 BENCHMARK(mcmlThreeLayerSlab)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 BENCHMARK_MAIN();

@@ -40,7 +40,8 @@ void unsignedOption(const std::string& text, std::uint64_t min, std::uint64_t ma
   fuzz::require(value >= min && value <= max, "an unsigned option within its range");
   std::string digits = text;
   while (digits.size() > 1 && digits[0] == '0') digits.erase(0, 1);
-  fuzz::require(std::to_string(value) == digits, "an unsigned option is exactly its digits (no wrap)");
+  fuzz::require(std::to_string(value) == digits,
+                "an unsigned option is exactly its digits (no wrap)");
   CLI::Validator check = unsignedRange(min, max);
   std::string copy = text;
   fuzz::require(check(copy).empty(), "the CLI11 check accepts what parseUnsigned accepts");
@@ -51,7 +52,8 @@ void realOption(const std::string& text, double min, double max) {
   std::string copy = text;
   if (!check(copy).empty()) return;
   const double value = std::strtod(text.c_str(), nullptr);
-  fuzz::require(std::isfinite(value) && value >= min && value <= max, "a real option finite and in range");
+  fuzz::require(std::isfinite(value) && value >= min && value <= max,
+                "a real option finite and in range");
 }
 
 void resolution(const std::string& text) {
@@ -61,7 +63,8 @@ void resolution(const std::string& text) {
   } catch (const std::invalid_argument&) {
     return;
   }
-  fuzz::require(wh.first >= 1 && wh.second >= 1 && wh.first <= kMaxFilmSide && wh.second <= kMaxFilmSide &&
+  fuzz::require(wh.first >= 1 && wh.second >= 1 && wh.first <= kMaxFilmSide &&
+                    wh.second <= kMaxFilmSide &&
                     static_cast<long long>(wh.first) * wh.second <= kMaxFilmPixels,
                 "--resolution within the scene files' limits");
 }
@@ -75,9 +78,11 @@ void wavelengths(const std::string& text) {
   }
   for (std::size_t i = 0; i < list.size() && i < 1000; ++i) {
     const std::string written = formatWavelength(list[i]);
-    fuzz::require(std::strtod(written.c_str(), nullptr) == list[i], "a written wavelength reads back the same");
+    fuzz::require(std::strtod(written.c_str(), nullptr) == list[i],
+                  "a written wavelength reads back the same");
     if (i > 0 && list[i] != list[i - 1])
-      fuzz::require(written != formatWavelength(list[i - 1]), "distinct wavelengths are written distinctly");
+      fuzz::require(written != formatWavelength(list[i - 1]),
+                    "distinct wavelengths are written distinctly");
   }
 }
 
@@ -87,13 +92,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   const std::string text = hylios::fuzz::asText(data + 1, size - 1);
   switch (data[0] % 7) {
-    case 0: unsignedOption(text, 0, hylios::kMaxSeed); break;             // --seed
-    case 1: unsignedOption(text, 1, std::uint64_t{1} << 40); break;       // --rays
-    case 2: realOption(text, 0.0, 1.0); break;                           // --epsilon
-    case 3: realOption(text, 1e-4, 100); break;                          // --max-radius-cm
-    case 4: realOption(text, 0.0, 89.999); break;                        // --angle
-    case 5: resolution(text); break;                                     // --resolution
-    default: wavelengths(text); break;                                   // --wavelengths
+    case 0:
+      unsignedOption(text, 0, hylios::kMaxSeed);
+      break;  // --seed
+    case 1:
+      unsignedOption(text, 1, std::uint64_t{1} << 40);
+      break;  // --rays
+    case 2:
+      realOption(text, 0.0, 1.0);
+      break;  // --epsilon
+    case 3:
+      realOption(text, 1e-4, 100);
+      break;  // --max-radius-cm
+    case 4:
+      realOption(text, 0.0, 89.999);
+      break;  // --angle
+    case 5:
+      resolution(text);
+      break;  // --resolution
+    default:
+      wavelengths(text);
+      break;  // --wavelengths
   }
   return 0;
 }

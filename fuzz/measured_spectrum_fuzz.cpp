@@ -8,8 +8,8 @@
 #include <sstream>
 #include <string>
 
-#include "fuzz/fuzz_check.h"
 #include "app/measured_spectrum.h"
+#include "fuzz/fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hylios;

@@ -30,18 +30,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace hylios;
   SceneDesc scene;
   try {
-    scene = parseSceneText(fuzz::asText(data, size), "fuzz_scene.toml", HYLIOS_SOURCE_DIR "/scenes/test");
+    scene = parseSceneText(fuzz::asText(data, size), "fuzz_scene.toml",
+                           HYLIOS_SOURCE_DIR "/scenes/test");
   } catch (const std::exception&) {
     return 0;  // rejected with a message: fine
   }
   const double bound = kMaxSceneCoordinate;
   fuzz::require(scene.unitCm >= 1e-6 && scene.unitCm <= 1e6, "unit_cm in [1e-6, 1e6]");
-  fuzz::require(within(scene.camera.position) && within(scene.camera.lookAt) && within(scene.camera.up),
-                "camera vectors within the scene extent limit");
-  fuzz::require(within(scene.camera.apertureRadius, bound) && within(scene.camera.focusDistance, bound),
-                "camera distances within the limit");
-  fuzz::require(scene.film.width >= 1 && scene.film.height >= 1 && scene.film.width <= kMaxFilmSide &&
-                    scene.film.height <= kMaxFilmSide &&
+  fuzz::require(
+      within(scene.camera.position) && within(scene.camera.lookAt) && within(scene.camera.up),
+      "camera vectors within the scene extent limit");
+  fuzz::require(
+      within(scene.camera.apertureRadius, bound) && within(scene.camera.focusDistance, bound),
+      "camera distances within the limit");
+  fuzz::require(scene.film.width >= 1 && scene.film.height >= 1 &&
+                    scene.film.width <= kMaxFilmSide && scene.film.height <= kMaxFilmSide &&
                     static_cast<long long>(scene.film.width) * scene.film.height <= kMaxFilmPixels,
                 "film within the resolution limits");
   std::set<long long> channels;
@@ -50,11 +53,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fuzz::require(std::isfinite(nm) && channels.insert(std::llround(nm * 1e6)).second,
                     "channel wavelengths finite and distinct to 1e-6 nm");
   for (const ShapeDesc& shape : scene.shapes) {
-    fuzz::require(within(shape.centre) && within(shape.planePoint), "shape positions within the limit");
-    if (shape.kind == ShapeDesc::Kind::Sphere) fuzz::require(within(shape.radius, bound) && shape.radius > 0, "radius in (0, 1e7]");
-    if (shape.kind == ShapeDesc::Kind::Plane) fuzz::require(within(shape.planeSize, bound) && shape.planeSize > 0, "size in (0, 1e7]");
+    fuzz::require(within(shape.centre) && within(shape.planePoint),
+                  "shape positions within the limit");
+    if (shape.kind == ShapeDesc::Kind::Sphere)
+      fuzz::require(within(shape.radius, bound) && shape.radius > 0, "radius in (0, 1e7]");
+    if (shape.kind == ShapeDesc::Kind::Plane)
+      fuzz::require(within(shape.planeSize, bound) && shape.planeSize > 0, "size in (0, 1e7]");
     for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) fuzz::require(std::isfinite(shape.transform[c][r]), "finite transform");
+      for (int r = 0; r < 4; ++r)
+        fuzz::require(std::isfinite(shape.transform[c][r]), "finite transform");
   }
   for (const LightDesc& light : scene.lights)
     fuzz::require(within(light.position), "light positions within the limit");

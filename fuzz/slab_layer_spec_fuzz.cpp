@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <exception>
 
-#include "fuzz/fuzz_check.h"
 #include "app/slab_layer_spec.h"
+#include "fuzz/fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hylios;
@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const std::exception&) {
     return 0;
   }
-  fuzz::require(std::isfinite(layer.refractiveIndex) && layer.refractiveIndex > 0, "n finite and > 0");
+  fuzz::require(std::isfinite(layer.refractiveIndex) && layer.refractiveIndex > 0,
+                "n finite and > 0");
   fuzz::require(std::isfinite(layer.muA_perCm) && layer.muA_perCm >= 0, "mua finite and >= 0");
   fuzz::require(std::isfinite(layer.muS_perCm) && layer.muS_perCm >= 0, "mus finite and >= 0");
   fuzz::require(layer.anisotropyG > -1 && layer.anisotropyG < 1, "g in (-1, 1)");

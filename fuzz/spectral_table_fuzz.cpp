@@ -31,8 +31,8 @@ void checkTable(const hylios::skin::SpectralTable& table) {
     }
     // With moderate numbers (no overflow in differences) interpolation must give a number.
     if (!moderate) continue;
-    const double middle = table.minWavelengthNm() +
-                          0.5 * (table.maxWavelengthNm() - table.minWavelengthNm());
+    const double middle =
+        table.minWavelengthNm() + 0.5 * (table.maxWavelengthNm() - table.minWavelengthNm());
     require(std::isfinite(table.interpolate(c, middle)), "interpolation inside is finite");
     require(std::isfinite(table.interpolate(c, table.maxWavelengthNm())),
             "interpolation at the last wavelength is finite");
@@ -44,10 +44,9 @@ void checkTable(const hylios::skin::SpectralTable& table) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hylios;
   if (size == 0) return 0;
-  const auto duplicates = (data[0] & 1) ? skin::DuplicateWavelengths::Average
-                                        : skin::DuplicateWavelengths::Reject;
-  const auto missing =
-      (data[0] & 2) ? skin::MissingValues::DropRow : skin::MissingValues::Reject;
+  const auto duplicates =
+      (data[0] & 1) ? skin::DuplicateWavelengths::Average : skin::DuplicateWavelengths::Reject;
+  const auto missing = (data[0] & 2) ? skin::MissingValues::DropRow : skin::MissingValues::Reject;
   std::istringstream csv(fuzz::asText(data + 1, size - 1));
   try {
     const skin::SpectralTable table =

@@ -8,8 +8,8 @@
 #include <exception>
 #include <vector>
 
-#include "fuzz/fuzz_check.h"
 #include "app/wavelength_list.h"
+#include "fuzz/fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hylios;

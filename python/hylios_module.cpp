@@ -11,6 +11,7 @@
 // |             | passes, or TBB tasks where nothing is cached) and the Python error is raised |
 // | errors      | the messages of the command line (SpecimenError, SceneError: file:line:col)   |
 // | data        | HYLIOS_DATA_DIR or the compiled-in source tree (renderer/scene/data_paths.h) |
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -18,14 +19,12 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
-#include <fmt/format.h>
-
 #include <atomic>
-#include <cmath>
-#include <cstdlib>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -48,19 +47,19 @@
 #include "renderer/tracing/exit_table_cache.h"
 #include "renderer/tracing/render_job.h"
 #include "renderer/tracing/skin_table_cache.h"
+#include "skin/core/constants.h"
 #include "skin/core/thread_limit.h"
 #include "skin/effect_plan.h"
 #include "skin/exit_distribution.h"
+#include "skin/skin_mode.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_simulation.h"
-#include "skin/spectral_bundle.h"
-#include "skin/spectral_database.h"
-#include "skin/spectral_simulation.h"
 #include "skin/specimen.h"
 #include "skin/specimen_fit.h"
 #include "skin/specimen_writer.h"
-#include "skin/skin_mode.h"
-#include "skin/core/constants.h"
+#include "skin/spectral_bundle.h"
+#include "skin/spectral_database.h"
+#include "skin/spectral_simulation.h"
 
 namespace py = pybind11;
 
@@ -95,8 +94,9 @@ void runInterruptible(const std::function<void(const StopFlag&)>& work, bool can
       try {
         // One outer task with its own context: nested parallel algorithms bind to it, so
         // cancel_group_execution() skips their tasks that have not started.
-        tbb::parallel_for(tbb::blocked_range<int>(0, 1), [&](const tbb::blocked_range<int>&) { work(stop); },
-                          context);
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, 1), [&](const tbb::blocked_range<int>&) { work(stop); },
+            context);
       } catch (...) {
         failure = std::current_exception();
       }
@@ -137,7 +137,8 @@ py::array_t<double> array(const std::vector<double>& values) {
 }
 
 /// rows × columns, row-major.
-py::array_t<double> array2(const std::vector<double>& values, std::size_t rows, std::size_t columns) {
+py::array_t<double> array2(const std::vector<double>& values, std::size_t rows,
+                           std::size_t columns) {
   py::array_t<double> result({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(columns)});
   auto out = result.mutable_unchecked<2>();
   for (std::size_t r = 0; r < rows; ++r)
@@ -166,7 +167,8 @@ py::dict estimate(const skin::Estimate& e) {
 }
 
 /// Means and standard errors of a list of estimates, as two arrays (optionally reshaped).
-std::pair<std::vector<double>, std::vector<double>> split(const std::vector<skin::Estimate>& estimates) {
+std::pair<std::vector<double>, std::vector<double>> split(
+    const std::vector<skin::Estimate>& estimates) {
   std::pair<std::vector<double>, std::vector<double>> parts;
   for (const skin::Estimate& e : estimates) {
     parts.first.push_back(e.mean);
@@ -212,7 +214,8 @@ PySpecimen withOverrides(const PySpecimen& s, const std::vector<std::string>& ov
   return result;
 }
 
-std::vector<skin::SkinOptics> opticsOf(const skin::Specimen& specimen, const std::vector<double>& wavelengths) {
+std::vector<skin::SkinOptics> opticsOf(const skin::Specimen& specimen,
+                                       const std::vector<double>& wavelengths) {
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   std::vector<skin::SkinOptics> optics;  // first, so that a bad wavelength fails before any walk
   for (double w : wavelengths) optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
@@ -222,7 +225,8 @@ std::vector<skin::SkinOptics> opticsOf(const skin::Specimen& specimen, const std
 /// The estimators of the commands' --estimator option (app/estimator_option.cpp).
 void requireEstimator(const std::string& estimator) {
   if (estimator != "spectral" && estimator != "per-wavelength")
-    throw std::invalid_argument("estimator '" + estimator + "': expected 'spectral' or 'per-wavelength'");
+    throw std::invalid_argument("estimator '" + estimator +
+                                "': expected 'spectral' or 'per-wavelength'");
 }
 
 /// One tally per optics, as the commands' simulateWithEstimator (app/estimator_option.cpp): the
@@ -231,7 +235,8 @@ void requireEstimator(const std::string& estimator) {
 /// that one bundle and its random stream depends only on its wavelengths, so the tallies are those
 /// of one simulateSkinSpectral call over all wavelengths, and a stop request takes effect between
 /// bundles. The per-wavelength walk stops between wavelengths.
-std::vector<skin::SkinTally> simulateTallies(const std::string& estimator, const std::vector<skin::SkinOptics>& optics,
+std::vector<skin::SkinTally> simulateTallies(const std::string& estimator,
+                                             const std::vector<skin::SkinOptics>& optics,
                                              const skin::WalkRunOptions& run, const StopFlag& stop,
                                              ProgressBar* bar = nullptr) {
   std::vector<skin::SkinTally> tallies(optics.size(), skin::SkinTally(run.tally));
@@ -243,7 +248,8 @@ std::vector<skin::SkinTally> simulateTallies(const std::string& estimator, const
       std::vector<skin::SkinOptics> members;
       for (std::size_t i : bundles[b]) members.push_back(optics[i]);
       std::vector<skin::SkinTally> result = skin::simulateSkinSpectral(members, spectral);
-      for (std::size_t k = 0; k < bundles[b].size(); ++k) tallies[bundles[b][k]] = std::move(result[k]);
+      for (std::size_t k = 0; k < bundles[b].size(); ++k)
+        tallies[bundles[b][k]] = std::move(result[k]);
       if (bar) bar->advance(bundles[b].size());
     });
   } else {
@@ -271,10 +277,11 @@ struct SpectrumRequest {
   bool progress = false;
 };
 
-constexpr std::uint64_t kSpectrumPilotRays = 2000;  // as app/spectrum_command.cpp
+constexpr std::uint64_t kSpectrumPilotRays = 2000;          // as app/spectrum_command.cpp
 constexpr std::uint64_t kMaxRays = std::uint64_t{1} << 40;  // the commands' --rays bound
 
-std::optional<skin::EffectPlan> planWavelength(const SpectrumRequest& r, const skin::SkinOptics& optics) {
+std::optional<skin::EffectPlan> planWavelength(const SpectrumRequest& r,
+                                               const skin::SkinOptics& optics) {
   if (r.effectTolerance == 0) return std::nullopt;
   skin::PlanOptions options;
   options.incidenceDeg = {r.angleDeg};
@@ -295,9 +302,9 @@ skin::SkinTally tableTally(const skin::SkinWalk& walk, const SpectrumRequest& r)
   return tally;
 }
 
-py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double angleDeg, std::uint64_t rays,
-                  std::uint64_t seed, const std::string& estimator, int threads, double epsilon,
-                  const std::string& skinModel, bool progress) {
+py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double angleDeg,
+                  std::uint64_t rays, std::uint64_t seed, const std::string& estimator, int threads,
+                  double epsilon, const std::string& skinModel, bool progress) {
   SpectrumRequest r;
   r.wavelengths = parseWavelengthList(wavelengthText);
   r.angleDeg = angleDeg;
@@ -311,7 +318,8 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
   requireEstimator(estimator);
   if (skinModel != "walk" && skinModel != "table")
     throw std::invalid_argument("skin_model '" + skinModel + "': expected 'walk' or 'table'");
-  if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
+  if (!(angleDeg >= 0 && angleDeg < 90))
+    throw std::invalid_argument("angle_deg must lie in [0, 90)");
   if (rays < 1 || rays > kMaxRays) throw std::invalid_argument("rays must lie in [1, 2^40]");
   if (!(epsilon >= 0 && epsilon <= 1)) throw std::invalid_argument("epsilon must lie in [0, 1]");
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
@@ -342,8 +350,9 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
             skin::WalkRunOptions planned = run;
             if (plan) planned.walk = plan->walk;
             const skin::SkinOptics& walked = plan ? plan->optics : optics[i];
-            tallies[i] = r.skinModel == "table" ? tableTally(skin::SkinWalk(walked, planned.walk), r)
-                                                : skin::simulateSkin(walked, planned);
+            tallies[i] = r.skinModel == "table"
+                             ? tableTally(skin::SkinWalk(walked, planned.walk), r)
+                             : skin::simulateSkin(walked, planned);
             effectBound[i] = plan ? plan->droppedDepthBound : 0.0;
             if (bar) bar->advance();
           });
@@ -386,7 +395,8 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
 
 void requireFinite(double value, double nm, skin::Layer layer, const char* what) {
   if (!std::isfinite(value))
-    throw std::runtime_error(fmt::format("{} of {} at {} nm is {}", what, skin::layerName(layer), nm, value));
+    throw std::runtime_error(
+        fmt::format("{} of {} at {} nm is {}", what, skin::layerName(layer), nm, value));
 }
 
 py::dict coefficients(const PySpecimen& s, const std::string& wavelengthText) {
@@ -394,7 +404,8 @@ py::dict coefficients(const PySpecimen& s, const std::string& wavelengthText) {
   const std::vector<skin::SkinOptics> optics = opticsOf(s.specimen, wavelengths);
   const std::size_t n = wavelengths.size(), L = skin::kLayerCount, A = skin::kAbsorberCount;
   std::vector<double> muA(n * L), muR(n * L), muM(n * L), index(n * L);
-  py::array_t<double> perAbsorber({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L), static_cast<py::ssize_t>(A)});
+  py::array_t<double> perAbsorber(
+      {static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L), static_cast<py::ssize_t>(A)});
   auto out = perAbsorber.mutable_unchecked<3>();
   for (std::size_t i = 0; i < n; ++i) {
     for (skin::Layer l : skin::kAllLayers) {
@@ -411,7 +422,8 @@ py::dict coefficients(const PySpecimen& s, const std::string& wavelengthText) {
       for (skin::Absorber a : skin::kAllAbsorbers) {
         const double v = o.muA_perCm[skin::index(a)];
         requireFinite(v, wavelengths[i], l, "mu_a of an absorber");
-        out(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j), static_cast<py::ssize_t>(skin::index(a))) = v;
+        out(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j),
+            static_cast<py::ssize_t>(skin::index(a))) = v;
       }
     }
   }
@@ -447,11 +459,12 @@ py::dict directions(const skin::ReflectedDirections& r, std::size_t polar, std::
   return d;
 }
 
-py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double angleDeg, std::uint64_t rays,
-              std::uint64_t seed, std::size_t polarBins, std::size_t azimuthBins, const std::string& estimator,
-              int threads) {
+py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double angleDeg,
+              std::uint64_t rays, std::uint64_t seed, std::size_t polarBins,
+              std::size_t azimuthBins, const std::string& estimator, int threads) {
   requireEstimator(estimator);
-  if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
+  if (!(angleDeg >= 0 && angleDeg < 90))
+    throw std::invalid_argument("angle_deg must lie in [0, 90)");
   if (rays < 1 || rays > kMaxRays) throw std::invalid_argument("rays must lie in [1, 2^40]");
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
   const std::vector<double> wavelengths = parseWavelengthList(wavelengthText);
@@ -470,7 +483,8 @@ py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double ang
         const ThreadLimit threadLimit(threads);
         const std::vector<skin::SkinTally> tallies = simulateTallies(estimator, optics, run, stop);
         if (stop()) return;
-        for (std::size_t i = 0; i < tallies.size(); ++i) perWavelength[i] = skin::reflectionDistribution(tallies[i]);
+        for (std::size_t i = 0; i < tallies.size(); ++i)
+          perWavelength[i] = skin::reflectionDistribution(tallies[i]);
         mean = skin::meanOverWavelengths(perWavelength);
       },
       estimator == "per-wavelength");
@@ -486,7 +500,8 @@ py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double ang
   }
   py::dict cut;
   cut["signed_polar_deg"] = array(mean.inPlanePerSteradian.signedPolarDeg);
-  for (const auto& [name, values] : {std::pair<const char*, const std::vector<skin::Estimate>*>{"surface", &mean.inPlanePerSteradian.surface},
+  for (const auto& [name, values] : {std::pair<const char*, const std::vector<skin::Estimate>*>{
+                                         "surface", &mean.inPlanePerSteradian.surface},
                                      {"subsurface", &mean.inPlanePerSteradian.subsurface},
                                      {"total", &mean.inPlanePerSteradian.total}}) {
     const auto [m, e] = split(*values);
@@ -513,11 +528,12 @@ py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double ang
 // ---------------------------------------------------------------------------------------------
 // radial-profile (app/radial_profile_command.cpp).
 
-py::dict radialProfile(const PySpecimen& s, double wavelengthNm, double angleDeg, std::uint64_t rays,
-                       std::uint64_t seed, double maxRadiusCm, std::size_t bins, const std::string& estimator,
-                       int threads) {
+py::dict radialProfile(const PySpecimen& s, double wavelengthNm, double angleDeg,
+                       std::uint64_t rays, std::uint64_t seed, double maxRadiusCm, std::size_t bins,
+                       const std::string& estimator, int threads) {
   requireEstimator(estimator);
-  if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
+  if (!(angleDeg >= 0 && angleDeg < 90))
+    throw std::invalid_argument("angle_deg must lie in [0, 90)");
   if (rays < 1 || rays > kMaxRays) throw std::invalid_argument("rays must lie in [1, 2^40]");
   if (!(maxRadiusCm > 0)) throw std::invalid_argument("max_radius_cm must be positive");
   if (bins < 1) throw std::invalid_argument("bins must be positive");
@@ -534,12 +550,14 @@ py::dict radialProfile(const PySpecimen& s, double wavelengthNm, double angleDeg
   runInterruptible(
       [&](const StopFlag& stop) {
         const ThreadLimit threadLimit(threads);
-        const std::vector<skin::SkinTally> tallies = simulateTallies(estimator, {optics}, run, stop);
+        const std::vector<skin::SkinTally> tallies =
+            simulateTallies(estimator, {optics}, run, stop);
         if (!stop()) p = skin::radialProfile(tallies.front());
       },
       estimator == "per-wavelength");
   std::vector<double> area;
-  for (std::size_t i = 0; i < p.perCm2.size(); ++i) area.push_back(skin::annulusAreaCm2(p.innerCm[i], p.outerCm[i]));
+  for (std::size_t i = 0; i < p.perCm2.size(); ++i)
+    area.push_back(skin::annulusAreaCm2(p.innerCm[i], p.outerCm[i]));
   const auto [fraction, fractionErr] = split(p.fraction);
   const auto [perCm2, perCm2Err] = split(p.perCm2);
   py::dict d;
@@ -582,7 +600,8 @@ void setEstimator(T& settings, const std::optional<std::string>& estimator) {
     using Estimator = typename std::decay_t<decltype(settings.estimator)>::value_type;
     settings.estimator = *estimator == "spectral" ? Estimator::Spectral : Estimator::PerWavelength;
   } else {
-    throw std::invalid_argument("estimator: this renderer has no choice of estimator (it walks per wavelength)");
+    throw std::invalid_argument(
+        "estimator: this renderer has no choice of estimator (it walks per wavelength)");
   }
 }
 
@@ -597,12 +616,14 @@ void setNoiseTarget(T& settings, std::optional<double> target) {
 
 py::tuple render(const std::string& scenePath, std::optional<int> spp, std::optional<int> width,
                  std::optional<int> height, std::optional<std::uint64_t> seed, int threads,
-                 std::optional<std::string> skinMode, std::optional<double> epsilon, std::optional<double> noiseTarget,
-                 std::optional<std::string> estimator, bool progress, bool verbose) {
+                 std::optional<std::string> skinMode, std::optional<double> epsilon,
+                 std::optional<double> noiseTarget, std::optional<std::string> estimator,
+                 bool progress, bool verbose) {
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
   if (skinMode && *skinMode != "walk" && *skinMode != "table")
     throw std::invalid_argument("skin_model '" + *skinMode + "': expected 'walk' or 'table'");
-  if (epsilon && !(*epsilon >= 0 && *epsilon <= 1)) throw std::invalid_argument("epsilon must lie in [0, 1]");
+  if (epsilon && !(*epsilon >= 0 && *epsilon <= 1))
+    throw std::invalid_argument("epsilon must lie in [0, 1]");
   RenderSettings settings;
   settings.samplesPerPixel = spp;
   settings.width = width;
@@ -612,7 +633,8 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
   if (skinMode) settings.skinMode = parseEnum(*skinMode, skin::kSkinModeNames, "skin_model");
   settings.effectTolerance = epsilon;
   if (noiseTarget && !kRenderHasNoiseTarget)
-    throw py::value_error("noise_target: this renderer has no noise target");  // the Python layer says more
+    throw py::value_error(
+        "noise_target: this renderer has no noise target");  // the Python layer says more
   if (noiseTarget && !(std::isfinite(*noiseTarget) && *noiseTarget > 0))
     throw std::invalid_argument("noise_target must be a positive relative noise");
   setNoiseTarget(settings, noiseTarget);
@@ -630,7 +652,8 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
       false);
   const Film& film = *result.film;
   const std::size_t channels = film.channels().size();
-  py::array_t<float> image({static_cast<py::ssize_t>(film.height()), static_cast<py::ssize_t>(film.width()),
+  py::array_t<float> image({static_cast<py::ssize_t>(film.height()),
+                            static_cast<py::ssize_t>(film.width()),
                             static_cast<py::ssize_t>(channels)});
   auto out = image.mutable_unchecked<3>();
   std::vector<double> wavelengths;
@@ -651,11 +674,14 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
 /// Thrown out of the fit's progress hook to stop it on an interrupt.
 struct FitStopped {};
 
-py::dict fit(const std::vector<double>& measuredWavelengths, const std::vector<double>& measuredReflectance,
-             const PySpecimen& s, const std::vector<std::string>& free, std::optional<std::string> wavelengthText,
-             double angleDeg, std::uint64_t rays, std::uint64_t seed, int maxIterations, int threads) {
+py::dict fit(const std::vector<double>& measuredWavelengths,
+             const std::vector<double>& measuredReflectance, const PySpecimen& s,
+             const std::vector<std::string>& free, std::optional<std::string> wavelengthText,
+             double angleDeg, std::uint64_t rays, std::uint64_t seed, int maxIterations,
+             int threads) {
   if (measuredWavelengths.size() != measuredReflectance.size())
-    throw std::invalid_argument("fit: measured_wavelengths and measured_reflectance differ in length");
+    throw std::invalid_argument(
+        "fit: measured_wavelengths and measured_reflectance differ in length");
   if (measuredWavelengths.empty()) throw std::invalid_argument("fit: the measured curve is empty");
   for (std::size_t i = 0; i < measuredWavelengths.size(); ++i) {
     if (!std::isfinite(measuredWavelengths[i]) || !std::isfinite(measuredReflectance[i]))
@@ -663,7 +689,8 @@ py::dict fit(const std::vector<double>& measuredWavelengths, const std::vector<d
     if (i > 0 && !(measuredWavelengths[i] > measuredWavelengths[i - 1]))
       throw std::invalid_argument("fit: measured_wavelengths must increase");
   }
-  if (!(angleDeg >= 0 && angleDeg < 90)) throw std::invalid_argument("angle_deg must lie in [0, 90)");
+  if (!(angleDeg >= 0 && angleDeg < 90))
+    throw std::invalid_argument("angle_deg must lie in [0, 90)");
   if (rays < 100) throw std::invalid_argument("rays must be at least 100");
   if (maxIterations < 1) throw std::invalid_argument("max_iterations must be positive");
   if (threads < 0) throw std::invalid_argument("threads must be 0 (all cores) or positive");
@@ -673,7 +700,8 @@ py::dict fit(const std::vector<double>& measuredWavelengths, const std::vector<d
   measured.value = measuredReflectance;
   skin::FitOptions options;
   options.free = free;
-  for (const auto& name : options.free) skin::fitQuantity(name);  // unknown names fail before any walk
+  for (const auto& name : options.free)
+    skin::fitQuantity(name);  // unknown names fail before any walk
   options.incidenceDeg = angleDeg;
   options.rays = rays;
   options.seed = seed;
@@ -686,8 +714,9 @@ py::dict fit(const std::vector<double>& measuredWavelengths, const std::vector<d
         target.reflectance.push_back(measured.at(w));
       }
     if (target.wavelengthNm.empty())
-      throw skin::FitError(fmt::format("the measured curve ({}–{} nm) covers none of wavelengths {}",
-                                       measuredWavelengths.front(), measuredWavelengths.back(), *wavelengthText));
+      throw skin::FitError(
+          fmt::format("the measured curve ({}–{} nm) covers none of wavelengths {}",
+                      measuredWavelengths.front(), measuredWavelengths.back(), *wavelengthText));
   } else {
     target.wavelengthNm = measuredWavelengths;
     target.reflectance = measuredReflectance;
@@ -757,74 +786,90 @@ PYBIND11_MODULE(_hylios, m) {
 
   py::class_<PySpecimen>(m, "_Specimen", "A loaded specimen (see hylios.Specimen)")
       .def_property_readonly("name", [](const PySpecimen& s) { return s.specimen.name; })
-      .def_property_readonly("source_file", [](const PySpecimen& s) { return s.specimen.sourceFile.string(); })
-      .def("to_toml", [](const PySpecimen& s, const std::string& header) { return skin::formatSpecimenToml(s.specimen, header); },
-           py::arg("header") = "", "The specimen as specimen-file TOML text")
-      .def("values",
-           [](const PySpecimen& s) {
-             const skin::Specimen& x = s.specimen;
-             py::dict d;
-             d["surface_fold_aspect_ratio"] = x.surfaceFoldAspectRatio;
-             d["thickness_cm"] = std::vector<double>(x.thicknessCm.begin(), x.thicknessCm.end());
-             d["melanosome_fraction"] = std::vector<double>(x.melanosomeFraction.begin(), x.melanosomeFraction.end());
-             d["colloidal_melanin_fraction"] =
-                 std::vector<double>(x.colloidalMelaninFraction.begin(), x.colloidalMelaninFraction.end());
-             d["blood_fraction"] = std::vector<double>(x.bloodFraction.begin(), x.bloodFraction.end());
-             d["melanosome_eumelanin_mg_per_ml"] = x.melanosomeEumelanin_mgPerMl;
-             d["melanosome_pheomelanin_mg_per_ml"] = x.melanosomePheomelanin_mgPerMl;
-             d["melanosome_major_axis_um"] = x.melanosomeMajorAxisUm;
-             d["melanosome_minor_axis_um"] = x.melanosomeMinorAxisUm;
-             d["oxygenated_blood_fraction"] = x.oxygenatedBloodFraction;
-             d["water_reduction"] = x.waterReduction;
-             return d;
-           },
-           "The main specimen quantities (fractions in [0, 1], per layer where a list)");
+      .def_property_readonly("source_file",
+                             [](const PySpecimen& s) { return s.specimen.sourceFile.string(); })
+      .def(
+          "to_toml",
+          [](const PySpecimen& s, const std::string& header) {
+            return skin::formatSpecimenToml(s.specimen, header);
+          },
+          py::arg("header") = "", "The specimen as specimen-file TOML text")
+      .def(
+          "values",
+          [](const PySpecimen& s) {
+            const skin::Specimen& x = s.specimen;
+            py::dict d;
+            d["surface_fold_aspect_ratio"] = x.surfaceFoldAspectRatio;
+            d["thickness_cm"] = std::vector<double>(x.thicknessCm.begin(), x.thicknessCm.end());
+            d["melanosome_fraction"] =
+                std::vector<double>(x.melanosomeFraction.begin(), x.melanosomeFraction.end());
+            d["colloidal_melanin_fraction"] = std::vector<double>(
+                x.colloidalMelaninFraction.begin(), x.colloidalMelaninFraction.end());
+            d["blood_fraction"] =
+                std::vector<double>(x.bloodFraction.begin(), x.bloodFraction.end());
+            d["melanosome_eumelanin_mg_per_ml"] = x.melanosomeEumelanin_mgPerMl;
+            d["melanosome_pheomelanin_mg_per_ml"] = x.melanosomePheomelanin_mgPerMl;
+            d["melanosome_major_axis_um"] = x.melanosomeMajorAxisUm;
+            d["melanosome_minor_axis_um"] = x.melanosomeMinorAxisUm;
+            d["oxygenated_blood_fraction"] = x.oxygenatedBloodFraction;
+            d["water_reduction"] = x.waterReduction;
+            return d;
+          },
+          "The main specimen quantities (fractions in [0, 1], per layer where a list)");
 
   m.def("load_specimen", &loadSpecimen, py::arg("name_or_path"), py::arg("overrides"),
         "Loads a specimen by name (S1..S4) or path and applies 'key=value' overrides in order");
-  m.def("specimen_from_toml",
-        [](const std::string& text, const std::string& sourceName) { return PySpecimen{skin::parseSpecimen(text, sourceName)}; },
-        py::arg("text"), py::arg("source_name"), "Parses specimen-file TOML text");
+  m.def(
+      "specimen_from_toml",
+      [](const std::string& text, const std::string& sourceName) {
+        return PySpecimen{skin::parseSpecimen(text, sourceName)};
+      },
+      py::arg("text"), py::arg("source_name"), "Parses specimen-file TOML text");
   m.def("with_overrides", &withOverrides, py::arg("specimen"), py::arg("overrides"),
         "A copy of the specimen with 'key=value' overrides applied in order");
   m.def("override_keys", &skin::overrideKeys, "The keys of specimen overrides");
   m.def("layer_names", &layerNames, "The six layers, top to bottom");
   m.def("absorber_names", &absorberNames, "The absorbers, in the order of coefficient arrays");
-  m.def("data_root", [] { return dataRoot().string(); }, "The folder holding assets/ and scenes/");
+  m.def(
+      "data_root", [] { return dataRoot().string(); }, "The folder holding assets/ and scenes/");
   m.def("parse_resolution", &parseResolution, py::arg("text"), "'WxH' -> (W, H), as --resolution");
-  m.def("parse_wavelengths", &parseWavelengthList, py::arg("text"), "start:stop:step or a comma list, nm");
-  m.def("spectrum", &spectrum, py::arg("specimen"), py::arg("wavelengths"), py::arg("angle_deg"), py::arg("rays"),
-        py::arg("seed"), py::arg("estimator"), py::arg("threads"), py::arg("epsilon"), py::arg("skin_model"),
-        py::arg("progress"), "See hylios.spectrum");
-  m.def("coefficients", &coefficients, py::arg("specimen"), py::arg("wavelengths"), "See hylios.coefficients");
-  m.def("brdf", &brdf, py::arg("specimen"), py::arg("wavelengths"), py::arg("angle_deg"), py::arg("rays"),
-        py::arg("seed"), py::arg("polar_bins"), py::arg("azimuth_bins"), py::arg("estimator"), py::arg("threads"),
-        "See hylios.brdf");
-  m.def("radial_profile", &radialProfile, py::arg("specimen"), py::arg("wavelength_nm"), py::arg("angle_deg"),
-        py::arg("rays"), py::arg("seed"), py::arg("max_radius_cm"), py::arg("bins"), py::arg("estimator"),
-        py::arg("threads"),
-        "See hylios.radial_profile");
-  m.def("render", &render, py::arg("scene_path"), py::arg("spp"), py::arg("width"), py::arg("height"),
-        py::arg("seed"), py::arg("threads"), py::arg("skin_model"), py::arg("epsilon"), py::arg("noise_target"),
-        py::arg("estimator"), py::arg("progress"), py::arg("verbose"), "See hylios.render");
+  m.def("parse_wavelengths", &parseWavelengthList, py::arg("text"),
+        "start:stop:step or a comma list, nm");
+  m.def("spectrum", &spectrum, py::arg("specimen"), py::arg("wavelengths"), py::arg("angle_deg"),
+        py::arg("rays"), py::arg("seed"), py::arg("estimator"), py::arg("threads"),
+        py::arg("epsilon"), py::arg("skin_model"), py::arg("progress"), "See hylios.spectrum");
+  m.def("coefficients", &coefficients, py::arg("specimen"), py::arg("wavelengths"),
+        "See hylios.coefficients");
+  m.def("brdf", &brdf, py::arg("specimen"), py::arg("wavelengths"), py::arg("angle_deg"),
+        py::arg("rays"), py::arg("seed"), py::arg("polar_bins"), py::arg("azimuth_bins"),
+        py::arg("estimator"), py::arg("threads"), "See hylios.brdf");
+  m.def("radial_profile", &radialProfile, py::arg("specimen"), py::arg("wavelength_nm"),
+        py::arg("angle_deg"), py::arg("rays"), py::arg("seed"), py::arg("max_radius_cm"),
+        py::arg("bins"), py::arg("estimator"), py::arg("threads"), "See hylios.radial_profile");
+  m.def("render", &render, py::arg("scene_path"), py::arg("spp"), py::arg("width"),
+        py::arg("height"), py::arg("seed"), py::arg("threads"), py::arg("skin_model"),
+        py::arg("epsilon"), py::arg("noise_target"), py::arg("estimator"), py::arg("progress"),
+        py::arg("verbose"), "See hylios.render");
   m.attr("render_has_estimator") = kRenderHasEstimator;
   m.attr("render_has_noise_target") = kRenderHasNoiseTarget;
-  m.def("fit_quantities",
-        [] {
-          py::list list;
-          for (const skin::FitQuantity& q : skin::fitQuantities()) {
-            py::dict d;
-            d["name"] = q.name;
-            d["unit"] = q.unit;
-            d["lower"] = q.lower;
-            d["upper"] = q.upper;
-            d["basis"] = q.basis;
-            list.append(d);
-          }
-          return list;
-        },
-        "The quantities a fit may free, with units and bounds");
-  m.def("fit", &fit, py::arg("measured_wavelengths"), py::arg("measured_reflectance"), py::arg("specimen"),
-        py::arg("free"), py::arg("wavelengths"), py::arg("angle_deg"), py::arg("rays"), py::arg("seed"),
-        py::arg("max_iterations"), py::arg("threads"), "See hylios.fit");
+  m.def(
+      "fit_quantities",
+      [] {
+        py::list list;
+        for (const skin::FitQuantity& q : skin::fitQuantities()) {
+          py::dict d;
+          d["name"] = q.name;
+          d["unit"] = q.unit;
+          d["lower"] = q.lower;
+          d["upper"] = q.upper;
+          d["basis"] = q.basis;
+          list.append(d);
+        }
+        return list;
+      },
+      "The quantities a fit may free, with units and bounds");
+  m.def("fit", &fit, py::arg("measured_wavelengths"), py::arg("measured_reflectance"),
+        py::arg("specimen"), py::arg("free"), py::arg("wavelengths"), py::arg("angle_deg"),
+        py::arg("rays"), py::arg("seed"), py::arg("max_iterations"), py::arg("threads"),
+        "See hylios.fit");
 }

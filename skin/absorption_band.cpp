@@ -1,9 +1,9 @@
 #include "skin/absorption_band.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace hylios::skin {
 

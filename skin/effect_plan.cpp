@@ -8,20 +8,22 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "skin/melanosome_path_lengths.h"
 #include "skin/core/statistics.h"
+#include "skin/melanosome_path_lengths.h"
 #include "skin/skin_simulation.h"
 
 namespace hylios::skin {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kConfidenceZ = 3.0;                         // τ⁺ = τ + 3 s.e.
-constexpr std::uint64_t kPilotStream = 0x5eed0f9e1a7b3c2dULL;  // keeps pilot streams apart from the main run's
+constexpr double kConfidenceZ = 3.0;  // τ⁺ = τ + 3 s.e.
+constexpr std::uint64_t kPilotStream =
+    0x5eed0f9e1a7b3c2dULL;  // keeps pilot streams apart from the main run's
 
 /// Upper Wilson score bound (z = 3) of a binomial proportion `hits` / `trials`.
 double wilsonUpper(std::uint64_t hits, std::uint64_t trials) {
-  const double n = static_cast<double>(trials), p = static_cast<double>(hits) / n, z2 = kConfidenceZ * kConfidenceZ;
+  const double n = static_cast<double>(trials), p = static_cast<double>(hits) / n,
+               z2 = kConfidenceZ * kConfidenceZ;
   const double centre = p + z2 / (2 * n);
   const double spread = kConfidenceZ * std::sqrt(p * (1 - p) / n + z2 / (4 * n * n));
   return std::min(1.0, (centre + spread) / (1 + z2 / n));
@@ -49,7 +51,8 @@ PilotRun runPilot(const SkinOptics& optics, const WalkOptions& walkOptions, doub
   pilotOptions.tabulatedMelanosomes = true;
   const SkinWalk walk(optics, pilotOptions);
   const Vec3 incident = incidentDirection(incidenceDeg);
-  const std::uint64_t stream = mix64(wavelengthStream(optics.wavelengthNm) ^ kPilotStream) + angleIndex;
+  const std::uint64_t stream =
+      mix64(wavelengthStream(optics.wavelengthNm) ^ kPilotStream) + angleIndex;
   PilotRun run;
   run.rays = options.pilotRays;
   for (std::uint64_t i = 0; i < options.pilotRays; ++i) {
@@ -91,12 +94,15 @@ AbsorptionFraction melanosomeAbsorptionFraction(const SkinOptics& optics, Layer 
       pathLengthTableKey(m.semiMajorAxisCm / m.semiMinorAxisCm),
       pathLengthTableKey(optics.melaninRefractiveIndex / optics[layer].refractiveIndex));
   RunningStatistic absorbed;
-  for (double lengthPerMinorAxis : table->pathLengths()) absorbed.add(-std::expm1(-kappa * lengthPerMinorAxis));
+  for (double lengthPerMinorAxis : table->pathLengths())
+    absorbed.add(-std::expm1(-kappa * lengthPerMinorAxis));
   const double whole = m.inComplexes ? std::floor(m.melanosomesPerComplex) : 1.0;
   const double fraction = m.inComplexes ? m.melanosomesPerComplex - whole : 0.0;
   auto perInteraction = [&](double p1) {
     const double p = std::min(1.0, p1);
-    auto forCount = [p](double count) { return count > 0 ? -std::expm1(count * std::log1p(-p)) : 0.0; };
+    auto forCount = [p](double count) {
+      return count > 0 ? -std::expm1(count * std::log1p(-p)) : 0.0;
+    };
     return (1 - fraction) * forCount(whole) + fraction * forCount(whole + 1);
   };
   return {perInteraction(absorbed.mean()),
@@ -104,8 +110,9 @@ AbsorptionFraction melanosomeAbsorptionFraction(const SkinOptics& optics, Layer 
 }
 
 bool sameProcess(const PlannedEffect& a, const PlannedEffect& b) {
-  return a.process == b.process && (a.process == Process::SurfaceRoughness ||
-                                    (a.layer == b.layer && (a.process != Process::Absorption || a.absorber == b.absorber)));
+  return a.process == b.process &&
+         (a.process == Process::SurfaceRoughness ||
+          (a.layer == b.layer && (a.process != Process::Absorption || a.absorber == b.absorber)));
 }
 
 /// Adds (or raises to) τ, τ⁺ for a process of one optics and incidence.
@@ -155,14 +162,16 @@ void recordProcesses(const SkinOptics& optics, const WalkOptions& walk, const Pi
         e.layer = layer;
         e.opticalDepth = lo.melanosome.mu_perCm * meanCm * p.estimate;
         const double upper = lo.melanosome.mu_perCm * (meanCm + kConfidenceZ * seCm) * p.upper;
-        e.opticalDepthUpper = run.entered[k] < kMinPilotRaysInLayer ? run.enteredUpper(k)
-                                                                     : std::min(upper, run.enteredUpper(k));
+        e.opticalDepthUpper = run.entered[k] < kMinPilotRaysInLayer
+                                  ? run.enteredUpper(k)
+                                  : std::min(upper, run.enteredUpper(k));
         record(effects, e);
       } else {
         add(Process::Melanosomes, Absorber::Water, lo.melanosome.mu_perCm);
       }
     }
-    if (walk.rayleigh && lo.muRayleigh_perCm > 0) add(Process::Rayleigh, Absorber::Water, lo.muRayleigh_perCm);
+    if (walk.rayleigh && lo.muRayleigh_perCm > 0)
+      add(Process::Rayleigh, Absorber::Water, lo.muRayleigh_perCm);
   }
   if (walk.roughSurface) {
     PlannedEffect e;
@@ -174,19 +183,25 @@ void recordProcesses(const SkinOptics& optics, const WalkOptions& walk, const Pi
   }
 }
 
-void checkArguments(const std::vector<SkinOptics>& optics, double epsilon, const PlanOptions& options) {
+void checkArguments(const std::vector<SkinOptics>& optics, double epsilon,
+                    const PlanOptions& options) {
   if (!(epsilon >= 0 && epsilon <= 1))
-    throw std::invalid_argument("effect plan: tolerance epsilon = " + std::to_string(epsilon) + " must lie in [0, 1]");
-  if (options.pilotRays == 0) throw std::invalid_argument("effect plan: the pilot needs at least one ray");
-  if (options.incidenceDeg.empty()) throw std::invalid_argument("effect plan: no pilot incidence given");
+    throw std::invalid_argument("effect plan: tolerance epsilon = " + std::to_string(epsilon) +
+                                " must lie in [0, 1]");
+  if (options.pilotRays == 0)
+    throw std::invalid_argument("effect plan: the pilot needs at least one ray");
+  if (options.incidenceDeg.empty())
+    throw std::invalid_argument("effect plan: no pilot incidence given");
   for (double a : options.incidenceDeg)
     if (!(a >= 0 && a < 90))
-      throw std::invalid_argument("effect plan: pilot incidence " + std::to_string(a) + "° must lie in [0°, 90°)");
+      throw std::invalid_argument("effect plan: pilot incidence " + std::to_string(a) +
+                                  "° must lie in [0°, 90°)");
   if (optics.empty()) throw std::invalid_argument("effect plan: no optics to plan");
   for (const SkinOptics& o : optics)
     if (o.wavelengthNm != optics.front().wavelengthNm)
-      throw std::invalid_argument("effect plan: optics at " + std::to_string(o.wavelengthNm) + " and " +
-                                  std::to_string(optics.front().wavelengthNm) + " nm cannot share a plan");
+      throw std::invalid_argument("effect plan: optics at " + std::to_string(o.wavelengthNm) +
+                                  " and " + std::to_string(optics.front().wavelengthNm) +
+                                  " nm cannot share a plan");
 }
 
 /// Processes whose events cost time (melanosome interactions, Rayleigh draws) come first: dropping
@@ -199,7 +214,8 @@ double dropCheapest(std::vector<PlannedEffect>& effects, double epsilon) {
   std::vector<std::size_t> order(effects.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const bool costlyA = costsTimePerEvent(effects[a].process), costlyB = costsTimePerEvent(effects[b].process);
+    const bool costlyA = costsTimePerEvent(effects[a].process),
+               costlyB = costsTimePerEvent(effects[b].process);
     if (costlyA != costlyB) return costlyA;
     return effects[a].opticalDepthUpper < effects[b].opticalDepthUpper;
   });
@@ -235,7 +251,8 @@ std::string PlannedEffect::name() const {
 }
 
 std::size_t EffectPlan::droppedCount() const {
-  return static_cast<std::size_t>(std::count_if(effects.begin(), effects.end(), [](const PlannedEffect& e) { return !e.kept; }));
+  return static_cast<std::size_t>(std::count_if(effects.begin(), effects.end(),
+                                                [](const PlannedEffect& e) { return !e.kept; }));
 }
 
 SkinOptics EffectPlan::apply(const SkinOptics& other) const {
@@ -246,7 +263,8 @@ SkinOptics EffectPlan::apply(const SkinOptics& other) const {
     switch (e.process) {
       case Process::Absorption:
         lo.muA_perCm[index(e.absorber)] = 0;
-        lo.muATotal_perCm = std::accumulate(lo.muA_perCm.begin(), lo.muA_perCm.end(), 0.0);  // Eq. 3
+        lo.muATotal_perCm =
+            std::accumulate(lo.muA_perCm.begin(), lo.muA_perCm.end(), 0.0);  // Eq. 3
         break;
       case Process::Melanosomes:
         lo.melanosome.mu_perCm = 0;
@@ -265,7 +283,8 @@ EffectPlan planEffects(const SkinOptics& optics, double epsilon, const PlanOptio
   return planEffects(std::vector<SkinOptics>{optics}, epsilon, options);
 }
 
-EffectPlan planEffects(const std::vector<SkinOptics>& optics, double epsilon, const PlanOptions& options) {
+EffectPlan planEffects(const std::vector<SkinOptics>& optics, double epsilon,
+                       const PlanOptions& options) {
   checkArguments(optics, epsilon, options);
   EffectPlan plan;
   plan.epsilon = epsilon;
@@ -294,20 +313,25 @@ EffectPlan planEffects(const std::vector<SkinOptics>& optics, double epsilon, co
 std::string EffectPlan::explain() const {
   std::ostringstream out;
   char line[160];
-  std::snprintf(line, sizeof line, "effect plan at %g nm, epsilon = %g (pilot: %llu rays at", wavelengthNm, epsilon,
-                static_cast<unsigned long long>(pilotRaysTraced));
+  std::snprintf(line, sizeof line, "effect plan at %g nm, epsilon = %g (pilot: %llu rays at",
+                wavelengthNm, epsilon, static_cast<unsigned long long>(pilotRaysTraced));
   out << line;
-  for (std::size_t i = 0; i < pilotIncidenceDeg.size(); ++i) out << (i ? ", " : " ") << pilotIncidenceDeg[i];
+  for (std::size_t i = 0; i < pilotIncidenceDeg.size(); ++i)
+    out << (i ? ", " : " ") << pilotIncidenceDeg[i];
   out << " deg incidence)\n";
-  std::snprintf(line, sizeof line, "  %-30s %-20s %12s %12s  %s\n", "process", "layer", "tau", "bound", "plan");
+  std::snprintf(line, sizeof line, "  %-30s %-20s %12s %12s  %s\n", "process", "layer", "tau",
+                "bound", "plan");
   out << line;
   for (const PlannedEffect& e : effects) {
-    std::snprintf(line, sizeof line, "  %-30s %-20s %12.4g %12.4g  %s\n", e.name().c_str(), layerLabel(e).c_str(),
-                  e.opticalDepth, e.opticalDepthUpper, e.kept ? "kept" : "skipped");
+    std::snprintf(line, sizeof line, "  %-30s %-20s %12.4g %12.4g  %s\n", e.name().c_str(),
+                  layerLabel(e).c_str(), e.opticalDepth, e.opticalDepthUpper,
+                  e.kept ? "kept" : "skipped");
     out << line;
   }
-  std::snprintf(line, sizeof line, "  skipped %zu of %zu processes; bound on any exit probability |dR| <= %.3g (epsilon %g)\n",
-                droppedCount(), effects.size(), droppedDepthBound, epsilon);
+  std::snprintf(
+      line, sizeof line,
+      "  skipped %zu of %zu processes; bound on any exit probability |dR| <= %.3g (epsilon %g)\n",
+      droppedCount(), effects.size(), droppedDepthBound, epsilon);
   out << line;
   return out.str();
 }

@@ -54,29 +54,29 @@ enum class Process : std::uint8_t { Absorption, Melanosomes, Rayleigh, SurfaceRo
 
 struct PlannedEffect {
   Process process = Process::Absorption;
-  Layer layer = Layer::StratumCorneum;    ///< unused for SurfaceRoughness
-  Absorber absorber = Absorber::Water;    ///< Process::Absorption only
-  double opticalDepth = 0;                ///< τ_p, pilot estimate (expected events per ray)
-  double opticalDepthUpper = 0;           ///< τ⁺_p ≥ P(a p-event) (see above); +∞ for SurfaceRoughness
+  Layer layer = Layer::StratumCorneum;  ///< unused for SurfaceRoughness
+  Absorber absorber = Absorber::Water;  ///< Process::Absorption only
+  double opticalDepth = 0;              ///< τ_p, pilot estimate (expected events per ray)
+  double opticalDepthUpper = 0;  ///< τ⁺_p ≥ P(a p-event) (see above); +∞ for SurfaceRoughness
   bool kept = true;
-  std::string name() const;               ///< e.g. "absorption: water", "melanosomes", "Rayleigh"
+  std::string name() const;  ///< e.g. "absorption: water", "melanosomes", "Rayleigh"
 };
 
 struct PlanOptions {
   std::vector<double> incidenceDeg{0.0};  ///< each in [0, 90); pilotRays rays at each
   std::uint64_t pilotRays = 2000;
   std::uint64_t seed = 1;
-  WalkOptions walk;                       ///< the walk the plan starts from
+  WalkOptions walk;  ///< the walk the plan starts from
 };
 
 struct EffectPlan {
   double epsilon = kDefaultEffectTolerance;
   double wavelengthNm = 0;
-  std::vector<PlannedEffect> effects;     ///< every process with a nonzero coefficient somewhere
-  SkinOptics optics;                      ///< the (first) input optics with dropped processes zeroed
-  WalkOptions walk;                       ///< the input walk options with dropped switches off
-  double droppedDepthBound = 0;           ///< Σ τ⁺ of dropped processes: the bound on |ΔR|
-  std::uint64_t pilotRaysTraced = 0;      ///< the pilot's cost: rays traced in all
+  std::vector<PlannedEffect> effects;  ///< every process with a nonzero coefficient somewhere
+  SkinOptics optics;                   ///< the (first) input optics with dropped processes zeroed
+  WalkOptions walk;                    ///< the input walk options with dropped switches off
+  double droppedDepthBound = 0;        ///< Σ τ⁺ of dropped processes: the bound on |ΔR|
+  std::uint64_t pilotRaysTraced = 0;   ///< the pilot's cost: rays traced in all
   std::vector<double> pilotIncidenceDeg;  ///< for explain()
 
   std::size_t droppedCount() const;
@@ -96,6 +96,7 @@ EffectPlan planEffects(const SkinOptics& optics, double epsilon, const PlanOptio
 /// One plan shared by several optics at the same wavelength (e.g. the lowest and highest melanin
 /// level of a render channel): a process is listed if any of them has it, and its τ, τ⁺ are the
 /// largest over the optics and incidences, so the bound holds for each of them.
-EffectPlan planEffects(const std::vector<SkinOptics>& optics, double epsilon, const PlanOptions& options = {});
+EffectPlan planEffects(const std::vector<SkinOptics>& optics, double epsilon,
+                       const PlanOptions& options = {});
 
 }  // namespace hylios::skin

@@ -1,10 +1,11 @@
 #include "skin/exit_distribution.h"
-#include "skin/core/constants.h"
 
 #include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
+
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
@@ -18,7 +19,8 @@ const Histogram& requireHistogram(const std::optional<Histogram>& h, const char*
 
 DirectionBins binsOf(const SkinTally& tally) {
   if (tally.options().polarBins == 0)
-    throw std::invalid_argument("the tally kept no direction histograms (TallyOptions::polarBins = 0)");
+    throw std::invalid_argument(
+        "the tally kept no direction histograms (TallyOptions::polarBins = 0)");
   return DirectionBins(tally.options().polarBins, tally.options().azimuthBins);
 }
 
@@ -26,7 +28,8 @@ DirectionBins binsOf(const SkinTally& tally) {
 using BinEstimate = std::function<Estimate(std::size_t bin)>;
 
 /// Σ of the given bins (exclusive: one exit per ray).
-Estimate sumOfBins(const BinEstimate& binEstimate, std::uint64_t packets, const std::vector<std::size_t>& bins) {
+Estimate sumOfBins(const BinEstimate& binEstimate, std::uint64_t packets,
+                   const std::vector<std::size_t>& bins) {
   std::vector<Estimate> parts;
   parts.reserve(bins.size());
   for (std::size_t b : bins) parts.push_back(binEstimate(b));
@@ -35,8 +38,8 @@ Estimate sumOfBins(const BinEstimate& binEstimate, std::uint64_t packets, const 
 
 /// Per-sr estimates of a side of the plane of incidence: for every polar ring, the bins near
 /// `azimuthRad` merged and divided by their total solid angle.
-std::vector<Estimate> inPlaneSide(const BinEstimate& binEstimate, std::uint64_t packets, const DirectionBins& bins,
-                                  double azimuthRad) {
+std::vector<Estimate> inPlaneSide(const BinEstimate& binEstimate, std::uint64_t packets,
+                                  const DirectionBins& bins, double azimuthRad) {
   const std::vector<std::size_t> near = bins.azimuthBinsNear(azimuthRad);
   std::vector<Estimate> side;
   for (std::size_t i = 0; i < bins.polarBins(); ++i) {
@@ -49,7 +52,8 @@ std::vector<Estimate> inPlaneSide(const BinEstimate& binEstimate, std::uint64_t 
 }
 
 /// Negative θ (φ = 180°) from −90° up to 0, then positive θ (φ = 0°) from 0 to 90°.
-std::vector<Estimate> joinSides(const std::vector<Estimate>& back, const std::vector<Estimate>& forward) {
+std::vector<Estimate> joinSides(const std::vector<Estimate>& back,
+                                const std::vector<Estimate>& forward) {
   std::vector<Estimate> joined(back.rbegin(), back.rend());
   joined.insert(joined.end(), forward.begin(), forward.end());
   return joined;
@@ -61,7 +65,8 @@ std::vector<Estimate> meanOfEach(const std::vector<const std::vector<Estimate>*>
   for (std::size_t b = 0; b < size; ++b) {
     std::vector<Estimate> values;
     for (const auto* list : lists) {
-      if (list->size() != size) throw std::invalid_argument("meanOverWavelengths: the distributions have different bins");
+      if (list->size() != size)
+        throw std::invalid_argument("meanOverWavelengths: the distributions have different bins");
       values.push_back((*list)[b]);
     }
     mean[b] = meanOfIndependent(values);
@@ -73,14 +78,16 @@ std::vector<Estimate> meanOfEach(const std::vector<const std::vector<Estimate>*>
 DirectionBins::DirectionBins(std::size_t polarBins, std::size_t azimuthBins)
     : polarBins_(polarBins), azimuthBins_(azimuthBins) {
   if (polarBins == 0 || azimuthBins == 0)
-    throw std::invalid_argument("direction bins: need at least one polar and one azimuth bin, got " +
-                                std::to_string(polarBins) + " × " + std::to_string(azimuthBins));
+    throw std::invalid_argument(
+        "direction bins: need at least one polar and one azimuth bin, got " +
+        std::to_string(polarBins) + " × " + std::to_string(azimuthBins));
 }
 
 std::size_t DirectionBins::flatIndex(std::size_t polarBin, std::size_t azimuthBin) const {
   if (polarBin >= polarBins_ || azimuthBin >= azimuthBins_)
-    throw std::out_of_range("direction bin (" + std::to_string(polarBin) + ", " + std::to_string(azimuthBin) +
-                            ") outside " + std::to_string(polarBins_) + " × " + std::to_string(azimuthBins_));
+    throw std::out_of_range("direction bin (" + std::to_string(polarBin) + ", " +
+                            std::to_string(azimuthBin) + ") outside " + std::to_string(polarBins_) +
+                            " × " + std::to_string(azimuthBins_));
   return polarBin * azimuthBins_ + azimuthBin;
 }
 
@@ -90,8 +97,12 @@ double DirectionBins::polarLowerRad(std::size_t i) const {
 double DirectionBins::polarUpperRad(std::size_t i) const {
   return i + 1 == polarBins_ ? kHalfPi : polarLowerRad(i + 1);
 }
-double DirectionBins::polarCentreRad(std::size_t i) const { return 0.5 * (polarLowerRad(i) + polarUpperRad(i)); }
-double DirectionBins::azimuthWidthRad() const { return 2 * kPi / static_cast<double>(azimuthBins_); }
+double DirectionBins::polarCentreRad(std::size_t i) const {
+  return 0.5 * (polarLowerRad(i) + polarUpperRad(i));
+}
+double DirectionBins::azimuthWidthRad() const {
+  return 2 * kPi / static_cast<double>(azimuthBins_);
+}
 double DirectionBins::azimuthLowerRad(std::size_t j) const {
   return -kPi + azimuthWidthRad() * static_cast<double>(j);
 }
@@ -112,7 +123,8 @@ std::vector<std::size_t> DirectionBins::azimuthBinsNear(double azimuthRad) const
   std::vector<std::size_t> near;
   const double width = azimuthWidthRad();
   for (std::size_t j = 0; j < azimuthBins_; ++j) {
-    const double distance = std::remainder(azimuthCentreRad(j) - azimuthRad, 2 * kPi);  // in [−π, π]
+    const double distance =
+        std::remainder(azimuthCentreRad(j) - azimuthRad, 2 * kPi);  // in [−π, π]
     if (std::fabs(distance) < width * (1 - 1e-9)) near.push_back(j);
   }
   return near;  // never empty: the bin holding azimuthRad has its centre within width/2
@@ -124,7 +136,8 @@ Estimate sumOfExclusive(const std::vector<Estimate>& parts, std::uint64_t packet
   for (const Estimate& e : parts) {
     mean += e.mean;
     // Var/(n−1) = s² and Var = E[x²] − m² (RunningStatistic), so E[x²] = s²(n−1) + m².
-    secondMoment += packets < 2 ? 0.0 : e.standardError * e.standardError * (n - 1) + e.mean * e.mean;
+    secondMoment +=
+        packets < 2 ? 0.0 : e.standardError * e.standardError * (n - 1) + e.mean * e.mean;
   }
   if (packets < 2) return {mean, 0.0};
   const double variance = std::fmax(0.0, secondMoment - mean * mean);  // negative only by rounding
@@ -135,8 +148,8 @@ Estimate ratioOfExclusive(const Estimate& a, const Estimate& b, std::uint64_t pa
   if (b.mean == 0) throw std::domain_error("ratio of estimates: the denominator is 0");
   const double r = a.mean / b.mean;
   const double covariance = packets < 2 ? 0.0 : -a.mean * b.mean / static_cast<double>(packets - 1);
-  const double variance = a.standardError * a.standardError + r * r * b.standardError * b.standardError -
-                          2 * r * covariance;
+  const double variance = a.standardError * a.standardError +
+                          r * r * b.standardError * b.standardError - 2 * r * covariance;
   return {r, std::sqrt(std::fmax(0.0, variance)) / std::fabs(b.mean)};
 }
 
@@ -151,20 +164,25 @@ Estimate meanOfIndependent(const std::vector<Estimate>& estimates) {
   return {sum / k, std::sqrt(variance) / k};
 }
 
-Estimate scaled(const Estimate& e, double factor) { return {e.mean * factor, e.standardError * std::fabs(factor)}; }
+Estimate scaled(const Estimate& e, double factor) {
+  return {e.mean * factor, e.standardError * std::fabs(factor)};
+}
 
 ReflectionDistribution reflectionDistribution(const SkinTally& tally) {
   const DirectionBins bins = binsOf(tally);
   const Histogram& surface = requireHistogram(tally.surfaceDirections(), "surface direction");
-  const Histogram& subsurface = requireHistogram(tally.subsurfaceDirections(), "subsurface direction");
+  const Histogram& subsurface =
+      requireHistogram(tally.subsurfaceDirections(), "subsurface direction");
   const std::uint64_t packets = surface.packets();
   ReflectionDistribution d;
   for (std::size_t i = 0; i < bins.polarBins(); ++i) {
-    const double perSr = 1.0 / bins.solidAngleSr(i), perProjectedSr = 1.0 / bins.projectedSolidAngleSr(i);
+    const double perSr = 1.0 / bins.solidAngleSr(i),
+                 perProjectedSr = 1.0 / bins.projectedSolidAngleSr(i);
     for (std::size_t j = 0; j < bins.azimuthBins(); ++j) {
       const std::size_t b = bins.flatIndex(i, j);
       const Estimate s = surface.estimate(b), u = subsurface.estimate(b);
-      const Estimate t = sumOfExclusive({s, u}, packets);  // a ray leaves once: surface or subsurface
+      const Estimate t =
+          sumOfExclusive({s, u}, packets);  // a ray leaves once: surface or subsurface
       d.perSteradian.surface.push_back(scaled(s, perSr));
       d.perSteradian.subsurface.push_back(scaled(u, perSr));
       d.perSteradian.total.push_back(scaled(t, perSr));
@@ -174,24 +192,29 @@ ReflectionDistribution reflectionDistribution(const SkinTally& tally) {
     }
   }
   InPlaneCut& cut = d.inPlanePerSteradian;
-  for (std::size_t i = bins.polarBins(); i-- > 0;) cut.signedPolarDeg.push_back(-bins.polarCentreRad(i) * kDegPerRad);
-  for (std::size_t i = 0; i < bins.polarBins(); ++i) cut.signedPolarDeg.push_back(bins.polarCentreRad(i) * kDegPerRad);
+  for (std::size_t i = bins.polarBins(); i-- > 0;)
+    cut.signedPolarDeg.push_back(-bins.polarCentreRad(i) * kDegPerRad);
+  for (std::size_t i = 0; i < bins.polarBins(); ++i)
+    cut.signedPolarDeg.push_back(bins.polarCentreRad(i) * kDegPerRad);
   const BinEstimate surfaceBin = [&](std::size_t b) { return surface.estimate(b); };
   const BinEstimate subsurfaceBin = [&](std::size_t b) { return subsurface.estimate(b); };
   const BinEstimate totalBin = [&](std::size_t b) {
     return sumOfExclusive({surface.estimate(b), subsurface.estimate(b)}, packets);
   };
-  cut.surface = joinSides(inPlaneSide(surfaceBin, packets, bins, kPi), inPlaneSide(surfaceBin, packets, bins, 0.0));
-  cut.subsurface =
-      joinSides(inPlaneSide(subsurfaceBin, packets, bins, kPi), inPlaneSide(subsurfaceBin, packets, bins, 0.0));
-  cut.total = joinSides(inPlaneSide(totalBin, packets, bins, kPi), inPlaneSide(totalBin, packets, bins, 0.0));
+  cut.surface = joinSides(inPlaneSide(surfaceBin, packets, bins, kPi),
+                          inPlaneSide(surfaceBin, packets, bins, 0.0));
+  cut.subsurface = joinSides(inPlaneSide(subsurfaceBin, packets, bins, kPi),
+                             inPlaneSide(subsurfaceBin, packets, bins, 0.0));
+  cut.total = joinSides(inPlaneSide(totalBin, packets, bins, kPi),
+                        inPlaneSide(totalBin, packets, bins, 0.0));
   d.surfaceReflectance = tally.surfaceReflectance();
   d.subsurfaceReflectance = tally.subsurfaceReflectance();
   d.totalReflectance = tally.reflectance();
   return d;
 }
 
-ReflectionDistribution meanOverWavelengths(const std::vector<ReflectionDistribution>& distributions) {
+ReflectionDistribution meanOverWavelengths(
+    const std::vector<ReflectionDistribution>& distributions) {
   if (distributions.empty()) throw std::invalid_argument("meanOverWavelengths: no distributions");
   ReflectionDistribution mean;
   auto each = [&](auto member) {
@@ -199,16 +222,27 @@ ReflectionDistribution meanOverWavelengths(const std::vector<ReflectionDistribut
     for (const auto& d : distributions) lists.push_back(&member(d));
     return meanOfEach(lists);
   };
-  mean.perSteradian.surface = each([](const ReflectionDistribution& d) -> const auto& { return d.perSteradian.surface; });
-  mean.perSteradian.subsurface = each([](const ReflectionDistribution& d) -> const auto& { return d.perSteradian.subsurface; });
-  mean.perSteradian.total = each([](const ReflectionDistribution& d) -> const auto& { return d.perSteradian.total; });
-  mean.brdf.surface = each([](const ReflectionDistribution& d) -> const auto& { return d.brdf.surface; });
-  mean.brdf.subsurface = each([](const ReflectionDistribution& d) -> const auto& { return d.brdf.subsurface; });
-  mean.brdf.total = each([](const ReflectionDistribution& d) -> const auto& { return d.brdf.total; });
-  mean.inPlanePerSteradian.signedPolarDeg = distributions.front().inPlanePerSteradian.signedPolarDeg;
-  mean.inPlanePerSteradian.surface = each([](const ReflectionDistribution& d) -> const auto& { return d.inPlanePerSteradian.surface; });
-  mean.inPlanePerSteradian.subsurface = each([](const ReflectionDistribution& d) -> const auto& { return d.inPlanePerSteradian.subsurface; });
-  mean.inPlanePerSteradian.total = each([](const ReflectionDistribution& d) -> const auto& { return d.inPlanePerSteradian.total; });
+  mean.perSteradian.surface =
+      each([](const ReflectionDistribution& d) -> const auto& { return d.perSteradian.surface; });
+  mean.perSteradian.subsurface = each(
+      [](const ReflectionDistribution& d) -> const auto& { return d.perSteradian.subsurface; });
+  mean.perSteradian.total =
+      each([](const ReflectionDistribution& d) -> const auto& { return d.perSteradian.total; });
+  mean.brdf.surface =
+      each([](const ReflectionDistribution& d) -> const auto& { return d.brdf.surface; });
+  mean.brdf.subsurface =
+      each([](const ReflectionDistribution& d) -> const auto& { return d.brdf.subsurface; });
+  mean.brdf.total =
+      each([](const ReflectionDistribution& d) -> const auto& { return d.brdf.total; });
+  mean.inPlanePerSteradian.signedPolarDeg =
+      distributions.front().inPlanePerSteradian.signedPolarDeg;
+  mean.inPlanePerSteradian.surface = each(
+      [](const ReflectionDistribution& d) -> const auto& { return d.inPlanePerSteradian.surface; });
+  mean.inPlanePerSteradian.subsurface = each([](const ReflectionDistribution& d) -> const auto& {
+    return d.inPlanePerSteradian.subsurface;
+  });
+  mean.inPlanePerSteradian.total = each(
+      [](const ReflectionDistribution& d) -> const auto& { return d.inPlanePerSteradian.total; });
   auto meanOf = [&](Estimate ReflectionDistribution::*member) {
     std::vector<Estimate> values;
     for (const auto& d : distributions) values.push_back(d.*member);
@@ -222,14 +256,16 @@ ReflectionDistribution meanOverWavelengths(const std::vector<ReflectionDistribut
 
 TransmissionProfile transmissionProfile(const SkinTally& tally) {
   const DirectionBins bins = binsOf(tally);
-  const Histogram& transmitted = requireHistogram(tally.transmittedDirections(), "transmitted direction");
+  const Histogram& transmitted =
+      requireHistogram(tally.transmittedDirections(), "transmitted direction");
   const std::uint64_t packets = transmitted.packets();
   TransmissionProfile profile;
   std::vector<Estimate> ringFractions;
   for (std::size_t i = 0; i < bins.polarBins(); ++i) {
     std::vector<std::size_t> ring;
     for (std::size_t j = 0; j < bins.azimuthBins(); ++j) ring.push_back(bins.flatIndex(i, j));
-    ringFractions.push_back(sumOfBins([&](std::size_t b) { return transmitted.estimate(b); }, packets, ring));
+    ringFractions.push_back(
+        sumOfBins([&](std::size_t b) { return transmitted.estimate(b); }, packets, ring));
     const double ringSolidAngle = bins.solidAngleSr(i) * static_cast<double>(bins.azimuthBins());
     profile.polarLowerDeg.push_back(bins.polarLowerRad(i) * kDegPerRad);
     profile.polarUpperDeg.push_back(bins.polarUpperRad(i) * kDegPerRad);
@@ -237,8 +273,9 @@ TransmissionProfile transmissionProfile(const SkinTally& tally) {
     profile.perSteradian.push_back(scaled(ringFractions.back(), 1.0 / ringSolidAngle));
   }
   if (ringFractions.front().mean == 0)
-    throw std::domain_error("no ray was transmitted within " + std::to_string(profile.polarUpperDeg.front()) +
-                            "° of the normal: the profile cannot be normalised (more rays or fewer polar bins?)");
+    throw std::domain_error(
+        "no ray was transmitted within " + std::to_string(profile.polarUpperDeg.front()) +
+        "° of the normal: the profile cannot be normalised (more rays or fewer polar bins?)");
   const double ringRatio0 = bins.solidAngleSr(0);
   for (std::size_t i = 0; i < bins.polarBins(); ++i) {
     if (i == 0) {
@@ -254,8 +291,9 @@ TransmissionProfile transmissionProfile(const SkinTally& tally) {
 
 double annulusAreaCm2(double innerCm, double outerCm) {
   if (!(innerCm >= 0 && outerCm >= innerCm))
-    throw std::invalid_argument("annulus: need 0 ≤ inner ≤ outer radius, got " + std::to_string(innerCm) +
-                                " and " + std::to_string(outerCm) + " cm");
+    throw std::invalid_argument("annulus: need 0 ≤ inner ≤ outer radius, got " +
+                                std::to_string(innerCm) + " and " + std::to_string(outerCm) +
+                                " cm");
   return kPi * (outerCm * outerCm - innerCm * innerCm);
 }
 
@@ -264,11 +302,13 @@ RadialProfile radialProfile(const SkinTally& tally) {
   RadialProfile profile;
   for (std::size_t b = 0; b < radial.binCount(); ++b) {
     const double inner = radial.binCentre(b) - 0.5 * radial.binWidth();
-    const double outer = b + 1 == radial.binCount() ? tally.options().maxRadiusCm : inner + radial.binWidth();
+    const double outer =
+        b + 1 == radial.binCount() ? tally.options().maxRadiusCm : inner + radial.binWidth();
     profile.innerCm.push_back(b == 0 ? 0.0 : inner);
     profile.outerCm.push_back(outer);
     profile.fraction.push_back(radial.estimate(b));
-    profile.perCm2.push_back(scaled(radial.estimate(b), 1.0 / annulusAreaCm2(profile.innerCm.back(), outer)));
+    profile.perCm2.push_back(
+        scaled(radial.estimate(b), 1.0 / annulusAreaCm2(profile.innerCm.back(), outer)));
   }
   profile.beyondMaxRadius = radial.estimate(radial.overflowIndex());
   profile.subsurfaceReflectance = tally.subsurfaceReflectance();

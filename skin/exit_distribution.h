@@ -19,8 +19,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "skin/skin_tally.h"
 #include "skin/core/statistics.h"
+#include "skin/skin_tally.h"
 
 namespace hylios::skin {
 
@@ -92,7 +92,8 @@ struct ReflectionDistribution {
 ReflectionDistribution reflectionDistribution(const SkinTally& tally);
 /// The per-bin mean over wavelengths (independent runs), e.g. the visible band of paper Fig. 10.
 /// Throws std::invalid_argument for an empty list or differing bins.
-ReflectionDistribution meanOverWavelengths(const std::vector<ReflectionDistribution>& distributions);
+ReflectionDistribution meanOverWavelengths(
+    const std::vector<ReflectionDistribution>& distributions);
 
 /// The transmitted light of a truncated stack (Fig. 8): per polar bin (azimuth bins merged),
 /// fraction per sr from the inward normal and the same normalised to the first bin (θ ≈ 0°).
@@ -113,10 +114,10 @@ double annulusAreaCm2(double innerCm, double outerCm);
 /// Subsurface exits per unit area around the entry point (radially symmetric part of the BSSRDF).
 struct RadialProfile {
   std::vector<double> innerCm, outerCm;
-  std::vector<Estimate> perCm2;       ///< fraction of incident rays per cm² of the annulus
-  std::vector<Estimate> fraction;     ///< fraction of incident rays in the annulus
-  Estimate beyondMaxRadius;           ///< subsurface exits at r ≥ maxRadiusCm (not in any bin)
-  Estimate subsurfaceReflectance;     ///< = Σ fraction + beyondMaxRadius
+  std::vector<Estimate> perCm2;    ///< fraction of incident rays per cm² of the annulus
+  std::vector<Estimate> fraction;  ///< fraction of incident rays in the annulus
+  Estimate beyondMaxRadius;        ///< subsurface exits at r ≥ maxRadiusCm (not in any bin)
+  Estimate subsurfaceReflectance;  ///< = Σ fraction + beyondMaxRadius
 };
 /// Throws std::invalid_argument when the tally kept no radial histogram.
 RadialProfile radialProfile(const SkinTally& tally);

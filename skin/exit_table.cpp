@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "skin/core/content_hash.h"
 #include "skin/core/atomic_file.h"
 #include "skin/core/constants.h"
+#include "skin/core/content_hash.h"
 
 namespace hylios::skin {
 namespace {
@@ -21,13 +21,15 @@ namespace {
 constexpr char kMagic[8] = {'H', 'Y', 'L', 'X', 'T', 'A', 'B', '1'};
 constexpr std::size_t kHeaderBytes = 8 + 4 * 8;
 constexpr std::uint64_t kChunkRays = 2048;
-constexpr std::size_t kOutcomes = 3 + 2 * kLayerCount;  // subsurface, transmitted, event limit, absorbed ×2
+constexpr std::size_t kOutcomes =
+    3 + 2 * kLayerCount;  // subsurface, transmitted, event limit, absorbed ×2
 constexpr std::size_t kOutcomeAbsorbed = 3, kOutcomeMelanosome = 3 + kLayerCount;
 
 void checkRange(const char* name, std::uint64_t value, std::uint64_t lo, std::uint64_t hi) {
   if (value < lo || value > hi)
     throw std::invalid_argument(std::string("exit table: ") + name + " = " + std::to_string(value) +
-                                " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+                                " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                                "]");
 }
 
 void validateSettings(const ExitTableSettings& s) {
@@ -62,7 +64,8 @@ struct Reader {
       return 0;
     }
     std::uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+    for (int i = 0; i < 8; ++i)
+      v |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
     at += 8;
     return v;
   }
@@ -112,7 +115,10 @@ void hashOptics(ContentHash& h, const SkinOptics& o) {
     for (double mu : l.muA_perCm) h.addDouble(mu);
     h.addDouble(l.muATotal_perCm).addDouble(l.muRayleigh_perCm);
     const MelanosomeOptics& m = l.melanosome;
-    h.addDouble(m.semiMinorAxisCm).addDouble(m.semiMajorAxisCm).addBool(m.inComplexes).addDouble(m.complexRadiusCm);
+    h.addDouble(m.semiMinorAxisCm)
+        .addDouble(m.semiMajorAxisCm)
+        .addBool(m.inComplexes)
+        .addDouble(m.complexRadiusCm);
     h.addDouble(m.melanosomesPerComplex).addDouble(m.mu_perCm);
   }
   h.addDouble(o.melanosomeInteriorMuA_perCm).addDouble(o.melaninRefractiveIndex);
@@ -121,15 +127,20 @@ void hashOptics(ContentHash& h, const SkinOptics& o) {
 
 }  // namespace
 
-std::uint64_t ExitTable::key(const SkinOptics& optics, const WalkOptions& walk, const ExitTableSettings& settings) {
+std::uint64_t ExitTable::key(const SkinOptics& optics, const WalkOptions& walk,
+                             const ExitTableSettings& settings) {
   ContentHash h;
   h.addString("hylios exit table").addU64(kExitTableFormatVersion);
   hashOptics(h, optics);
   h.addBool(walk.melanosomes).addBool(walk.rayleigh).addBool(walk.roughSurface);
-  h.addU64(static_cast<std::uint64_t>(index(walk.deepestLayer))).addDouble(walk.belowRefractiveIndex);
+  h.addU64(static_cast<std::uint64_t>(index(walk.deepestLayer)))
+      .addDouble(walk.belowRefractiveIndex);
   h.addBool(walk.tabulatedMelanosomes);
-  h.addU64(static_cast<std::uint64_t>(settings.cosineBins)).addU64(settings.raysPerBin).addU64(settings.seed);
-  h.addU64(static_cast<std::uint64_t>(settings.radialBins)).addU64(static_cast<std::uint64_t>(settings.offsetAzimuthBins));
+  h.addU64(static_cast<std::uint64_t>(settings.cosineBins))
+      .addU64(settings.raysPerBin)
+      .addU64(settings.seed);
+  h.addU64(static_cast<std::uint64_t>(settings.radialBins))
+      .addU64(static_cast<std::uint64_t>(settings.offsetAzimuthBins));
   h.addU64(static_cast<std::uint64_t>(settings.polarBins)).addBool(settings.tabulatedMelanosomes);
   h.addDouble(kMinRadiusCm).addDouble(kMaxRadiusCm);
   return h.value();
@@ -144,7 +155,8 @@ ExitTable::Bin& ExitTable::newBin() { return bins_.emplace_back(emptyBin()); }
 
 ExitTable::Bin ExitTable::emptyBin() const {
   Bin b;
-  b.offsetCounts.assign(static_cast<std::size_t>(settings_.radialBins + 2) * settings_.offsetAzimuthBins, 0);
+  b.offsetCounts.assign(
+      static_cast<std::size_t>(settings_.radialBins + 2) * settings_.offsetAzimuthBins, 0);
   b.exitPolarCounts.assign(static_cast<std::size_t>(settings_.polarBins), 0);
   b.transmittedPolarCounts.assign(static_cast<std::size_t>(settings_.polarBins), 0);
   return b;
@@ -160,8 +172,10 @@ void ExitTable::Bin::merge(const Bin& o) {
     absorbedInMelanosome[l] += o.absorbedInMelanosome[l];
   }
   for (std::size_t i = 0; i < offsetCounts.size(); ++i) offsetCounts[i] += o.offsetCounts[i];
-  for (std::size_t i = 0; i < exitPolarCounts.size(); ++i) exitPolarCounts[i] += o.exitPolarCounts[i];
-  for (std::size_t i = 0; i < transmittedPolarCounts.size(); ++i) transmittedPolarCounts[i] += o.transmittedPolarCounts[i];
+  for (std::size_t i = 0; i < exitPolarCounts.size(); ++i)
+    exitPolarCounts[i] += o.exitPolarCounts[i];
+  for (std::size_t i = 0; i < transmittedPolarCounts.size(); ++i)
+    transmittedPolarCounts[i] += o.transmittedPolarCounts[i];
   largestRadiusCm = std::max(largestRadiusCm, o.largestRadiusCm);
   radiusSumCm += o.radiusSumCm;
   radiusSquaresSumCm2 += o.radiusSquaresSumCm2;
@@ -170,20 +184,24 @@ void ExitTable::Bin::merge(const Bin& o) {
 int ExitTable::radialCell(double radiusCm) const {
   if (radiusCm < kMinRadiusCm) return 0;
   if (radiusCm >= kMaxRadiusCm) return settings_.radialBins + 1;
-  const double x = std::log(radiusCm / kMinRadiusCm) / std::log(kMaxRadiusCm / kMinRadiusCm) * settings_.radialBins;
-  return 1 + std::clamp(static_cast<int>(x), 0, settings_.radialBins - 1);  // rounding at the edges only
+  const double x = std::log(radiusCm / kMinRadiusCm) / std::log(kMaxRadiusCm / kMinRadiusCm) *
+                   settings_.radialBins;
+  return 1 + std::clamp(static_cast<int>(x), 0,
+                        settings_.radialBins - 1);  // rounding at the edges only
 }
 
 double ExitTable::radialCellLowerCm(int cell) const {
   if (cell == 0) return 0;
   if (cell > settings_.radialBins) return kMaxRadiusCm;
-  return kMinRadiusCm * std::pow(kMaxRadiusCm / kMinRadiusCm, static_cast<double>(cell - 1) / settings_.radialBins);
+  return kMinRadiusCm * std::pow(kMaxRadiusCm / kMinRadiusCm,
+                                 static_cast<double>(cell - 1) / settings_.radialBins);
 }
 
 double ExitTable::radialCellUpperCm(int bin, int cell) const {
   if (cell == 0) return kMinRadiusCm;
   if (cell > settings_.radialBins) return bins_[static_cast<std::size_t>(bin)].largestRadiusCm;
-  return kMinRadiusCm * std::pow(kMaxRadiusCm / kMinRadiusCm, static_cast<double>(cell) / settings_.radialBins);
+  return kMinRadiusCm *
+         std::pow(kMaxRadiusCm / kMinRadiusCm, static_cast<double>(cell) / settings_.radialBins);
 }
 
 /// Polar bin of a cosine in [0, 1] (uniform bins; cosine 1 goes to the last).
@@ -198,8 +216,10 @@ void ExitTable::tally(Bin& bin, const SkinPath& path) const {
       ++bin.subsurface;
       const double r = std::hypot(path.exitOffsetXCm, path.exitOffsetYCm);
       // Entry direction has azimuth 0 (x axis): the offset's azimuth from it, folded to [0, π].
-      const double phi = r > 0 ? std::atan2(std::fabs(path.exitOffsetYCm), path.exitOffsetXCm) : 0.0;
-      const int a = std::clamp(static_cast<int>(phi / kPi * settings_.offsetAzimuthBins), 0, settings_.offsetAzimuthBins - 1);
+      const double phi =
+          r > 0 ? std::atan2(std::fabs(path.exitOffsetYCm), path.exitOffsetXCm) : 0.0;
+      const int a = std::clamp(static_cast<int>(phi / kPi * settings_.offsetAzimuthBins), 0,
+                               settings_.offsetAzimuthBins - 1);
       bin.offsetCounts[static_cast<std::size_t>(radialCell(r)) * settings_.offsetAzimuthBins + a]++;
       bin.exitPolarCounts[polarBin(-path.exitDirection.z, settings_.polarBins)]++;
       bin.largestRadiusCm = std::max(bin.largestRadiusCm, r);
@@ -216,7 +236,8 @@ void ExitTable::tally(Bin& bin, const SkinPath& path) const {
       if (path.absorbedInMelanosome) ++bin.absorbedInMelanosome[index(path.layer)];
       break;
     case PathEnd::EventLimit:
-    case PathEnd::SurfaceReflection:  // traceEntered never reflects at the surface; count it as limit
+    case PathEnd::SurfaceReflection:  // traceEntered never reflects at the surface; count it as
+                                      // limit
       ++bin.eventLimited;
       break;
   }
@@ -225,7 +246,8 @@ void ExitTable::tally(Bin& bin, const SkinPath& path) const {
 ExitTable ExitTable::build(const SkinWalk& walk, const ExitTableSettings& settings) {
   ExitTable table(walk, settings);
   WalkOptions buildOptions = walk.options();
-  buildOptions.tabulatedMelanosomes = buildOptions.tabulatedMelanosomes || settings.tabulatedMelanosomes;
+  buildOptions.tabulatedMelanosomes =
+      buildOptions.tabulatedMelanosomes || settings.tabulatedMelanosomes;
   const SkinWalk buildWalk(walk.optics(), buildOptions);
   const std::size_t bins = static_cast<std::size_t>(settings.cosineBins);
   const std::uint64_t chunks = (settings.raysPerBin + kChunkRays - 1) / kChunkRays;
@@ -296,7 +318,8 @@ SkinPath ExitTable::sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng)
   path.events = 1;
   const std::size_t outcome = pick(bin.outcomeCdf, rng.uniform());
   auto polarDirection = [&](const std::vector<std::uint64_t>& cdf, double zSign) {
-    const double cosine = (static_cast<double>(pick(cdf, rng.uniform())) + rng.uniform()) / settings_.polarBins;
+    const double cosine =
+        (static_cast<double>(pick(cdf, rng.uniform())) + rng.uniform()) / settings_.polarBins;
     const double sine = std::sqrt(std::max(0.0, 1 - cosine * cosine));
     const double phi = 2 * kPi * rng.uniform();
     return Vec3{sine * std::cos(phi), sine * std::sin(phi), zSign * cosine};
@@ -324,9 +347,12 @@ SkinPath ExitTable::sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng)
   double r;
   const int binIndex = static_cast<int>(&bin - bins_.data());
   const double lo = radialCellLowerCm(radial), hi = radialCellUpperCm(binIndex, radial);
-  if (radial == 0) r = hi * std::sqrt(v);                              // uniform in area
-  else if (radial > settings_.radialBins) r = lo + v * (hi - lo);      // overflow: uniform
-  else r = lo * std::pow(hi / lo, v);                                  // log-uniform
+  if (radial == 0)
+    r = hi * std::sqrt(v);  // uniform in area
+  else if (radial > settings_.radialBins)
+    r = lo + v * (hi - lo);  // overflow: uniform
+  else
+    r = lo * std::pow(hi / lo, v);  // log-uniform
   double phi = (static_cast<double>(cell % A) + rng.uniform()) / static_cast<double>(A) * kPi;
   if (rng.uniform() < 0.5) phi = -phi;
   phi += std::atan2(transmitted.y, transmitted.x);
@@ -407,7 +433,8 @@ std::string ExitTable::serializePayload() const {
 }
 
 static std::size_t expectedPayloadBytes(const ExitTableSettings& s) {
-  const std::size_t perBin = 4 + 2 * kLayerCount + static_cast<std::size_t>(s.radialBins + 2) * s.offsetAzimuthBins +
+  const std::size_t perBin = 4 + 2 * kLayerCount +
+                             static_cast<std::size_t>(s.radialBins + 2) * s.offsetAzimuthBins +
                              2 * static_cast<std::size_t>(s.polarBins) + 3;
   return 8 * (7 + static_cast<std::size_t>(s.cosineBins) * perBin);
 }
@@ -419,9 +446,11 @@ bool ExitTable::parsePayload(const std::string& payload, std::string* whyNot) {
   };
   Reader r{payload};
   const ExitTableSettings& s = settings_;
-  if (r.u64() != static_cast<std::uint64_t>(s.cosineBins) || r.u64() != s.raysPerBin || r.u64() != s.seed ||
-      r.u64() != static_cast<std::uint64_t>(s.radialBins) || r.u64() != static_cast<std::uint64_t>(s.offsetAzimuthBins) ||
-      r.u64() != static_cast<std::uint64_t>(s.polarBins) || r.u64() != (s.tabulatedMelanosomes ? 1u : 0u))
+  if (r.u64() != static_cast<std::uint64_t>(s.cosineBins) || r.u64() != s.raysPerBin ||
+      r.u64() != s.seed || r.u64() != static_cast<std::uint64_t>(s.radialBins) ||
+      r.u64() != static_cast<std::uint64_t>(s.offsetAzimuthBins) ||
+      r.u64() != static_cast<std::uint64_t>(s.polarBins) ||
+      r.u64() != (s.tabulatedMelanosomes ? 1u : 0u))
     return fail("settings differ from the requested ones");
   bins_.clear();
   for (int k = 0; k < s.cosineBins; ++k) {
@@ -443,21 +472,25 @@ bool ExitTable::parsePayload(const std::string& payload, std::string* whyNot) {
     if (b.rays != s.raysPerBin) return fail("bin ray count differs");
     std::uint64_t ends = b.subsurface + b.transmitted + b.eventLimited;
     for (std::size_t l = 0; l < kLayerCount; ++l) {
-      if (b.absorbed[l] > b.rays || b.absorbedInMelanosome[l] > b.absorbed[l]) return fail("absorption counts inconsistent");
+      if (b.absorbed[l] > b.rays || b.absorbedInMelanosome[l] > b.absorbed[l])
+        return fail("absorption counts inconsistent");
       ends += b.absorbed[l];
     }
-    if (b.subsurface > b.rays || b.transmitted > b.rays || ends != b.rays) return fail("outcome counts do not add up");
+    if (b.subsurface > b.rays || b.transmitted > b.rays || ends != b.rays)
+      return fail("outcome counts do not add up");
     for (const auto* v : {&b.offsetCounts, &b.exitPolarCounts, &b.transmittedPolarCounts})
       for (auto c : *v)
         if (c > b.rays) return fail("histogram count exceeds the rays");
     if (sum(b.offsetCounts) != b.subsurface || sum(b.exitPolarCounts) != b.subsurface ||
         sum(b.transmittedPolarCounts) != b.transmitted)
       return fail("histograms do not add up");
-    if (!(std::isfinite(b.largestRadiusCm) && b.largestRadiusCm >= 0 && std::isfinite(b.radiusSumCm) &&
-          b.radiusSumCm >= 0 && std::isfinite(b.radiusSquaresSumCm2) && b.radiusSquaresSumCm2 >= 0))
+    if (!(std::isfinite(b.largestRadiusCm) && b.largestRadiusCm >= 0 &&
+          std::isfinite(b.radiusSumCm) && b.radiusSumCm >= 0 &&
+          std::isfinite(b.radiusSquaresSumCm2) && b.radiusSquaresSumCm2 >= 0))
       return fail("radius sums are not finite and non-negative");
     for (std::size_t a = 0; a < static_cast<std::size_t>(s.offsetAzimuthBins); ++a)
-      if (b.offsetCounts[static_cast<std::size_t>(s.radialBins + 1) * s.offsetAzimuthBins + a] > 0 &&
+      if (b.offsetCounts[static_cast<std::size_t>(s.radialBins + 1) * s.offsetAzimuthBins + a] >
+              0 &&
           !(b.largestRadiusCm >= kMaxRadiusCm))
         return fail("overflow radii without a largest radius");
   }
@@ -495,16 +528,22 @@ std::optional<ExitTable> ExitTable::read(const std::filesystem::path& path, cons
     std::ifstream in(path, std::ios::binary);
     if (!in) return fail("cannot open '" + path.string() + "'");
     std::string header(kHeaderBytes, '\0');
-    if (!in.read(header.data(), static_cast<std::streamsize>(header.size()))) return fail("header truncated");
+    if (!in.read(header.data(), static_cast<std::streamsize>(header.size())))
+      return fail("header truncated");
     if (std::memcmp(header.data(), kMagic, 8) != 0) return fail("not an exit table (magic)");
     const std::string fields = header.substr(8);
     Reader h{fields};
     const std::uint64_t version = h.u64(), fileKey = h.u64(), size = h.u64(), checksum = h.u64();
-    if (version != kExitTableFormatVersion) return fail("format version " + std::to_string(version));
-    if (fileKey != table.key_) return fail("key " + hex64(fileKey) + " differs from " + hex64(table.key_));
-    if (size != payloadBytes) return fail("payload size " + std::to_string(size) + " differs from the expected " + std::to_string(payloadBytes));
+    if (version != kExitTableFormatVersion)
+      return fail("format version " + std::to_string(version));
+    if (fileKey != table.key_)
+      return fail("key " + hex64(fileKey) + " differs from " + hex64(table.key_));
+    if (size != payloadBytes)
+      return fail("payload size " + std::to_string(size) + " differs from the expected " +
+                  std::to_string(payloadBytes));
     std::string payload(payloadBytes, '\0');
-    if (!in.read(payload.data(), static_cast<std::streamsize>(payload.size()))) return fail("payload truncated");
+    if (!in.read(payload.data(), static_cast<std::streamsize>(payload.size())))
+      return fail("payload truncated");
     if (in.peek() != std::char_traits<char>::eof()) return fail("trailing bytes after the payload");
     if (fnv1a64(payload.data(), payload.size()) != checksum) return fail("checksum mismatch");
     if (!table.parsePayload(payload, whyNot)) return std::nullopt;

@@ -4,13 +4,13 @@
 //
 // What is exact and what is tabulated. A ray from air first meets the rough surface; that step
 // (SkinWalk::enterFromAir) is simulated exactly, so surface reflection (probability and direction)
-// is the walk's own. A transmitted ray continues with direction t (t.z = μ_t > 0). By the symmetry of
-// the plane-parallel stack about z, everything after entry depends on μ_t only, when the exit offset
-// and exit direction are measured relative to t's azimuth φ_t. The table holds K bins at cosines
-// μ_k = (k + 1)/K (the last at normal transmission, where most rays go); bin k is filled from N walks
-// SkinWalk::traceEntered((√(1−μ_k²), 0, μ_k)), and a ray with μ_t between two centres uses the lower
-// or upper bin with the linear-interpolation probabilities (one uniform number; μ_t < 1/K uses bin
-// 0). Each bin keeps:
+// is the walk's own. A transmitted ray continues with direction t (t.z = μ_t > 0). By the symmetry
+// of the plane-parallel stack about z, everything after entry depends on μ_t only, when the exit
+// offset and exit direction are measured relative to t's azimuth φ_t. The table holds K bins at
+// cosines μ_k = (k + 1)/K (the last at normal transmission, where most rays go); bin k is filled
+// from N walks SkinWalk::traceEntered((√(1−μ_k²), 0, μ_k)), and a ray with μ_t between two centres
+// uses the lower or upper bin with the linear-interpolation probabilities (one uniform number; μ_t
+// < 1/K uses bin 0). Each bin keeps:
 //   * outcome counts: subsurface exit, transmitted (truncated stacks), event limit, and absorbed by
 //     layer, in a melanosome or not;
 //   * subsurface exits: a joint histogram of exit radius r (R log-spaced bins between kMinRadiusCm
@@ -41,12 +41,12 @@
 #include <string>
 #include <vector>
 
-#include "skin/layer.h"
 #include "skin/core/random.h"
-#include "skin/skin_optics.h"
-#include "skin/skin_walk.h"
 #include "skin/core/statistics.h"
 #include "skin/core/vector3.h"
+#include "skin/layer.h"
+#include "skin/skin_optics.h"
+#include "skin/skin_walk.h"
 
 namespace hylios::skin {
 
@@ -54,25 +54,25 @@ namespace hylios::skin {
 inline constexpr std::uint64_t kExitTableFormatVersion = 2;
 
 struct ExitTableSettings {
-  int cosineBins = 12;                 ///< K, bins of the transmitted direction's cosine
-  std::uint64_t raysPerBin = 40000;    ///< N, walks per bin
+  int cosineBins = 12;               ///< K, bins of the transmitted direction's cosine
+  std::uint64_t raysPerBin = 40000;  ///< N, walks per bin
   std::uint64_t seed = 1;
-  int radialBins = 96;                 ///< R, log-spaced between kMinRadiusCm and kMaxRadiusCm
-  int offsetAzimuthBins = 8;           ///< A, over |φ − φ_t| ∈ [0, π]
-  int polarBins = 32;                  ///< P, uniform in cosθ of the exit direction
-  bool tabulatedMelanosomes = true;    ///< build with WalkOptions::tabulatedMelanosomes
+  int radialBins = 96;               ///< R, log-spaced between kMinRadiusCm and kMaxRadiusCm
+  int offsetAzimuthBins = 8;         ///< A, over |φ − φ_t| ∈ [0, π]
+  int polarBins = 32;                ///< P, uniform in cosθ of the exit direction
+  bool tabulatedMelanosomes = true;  ///< build with WalkOptions::tabulatedMelanosomes
 };
 
 /// Exact per-bin estimates (from the build's walks) with standard errors.
 struct BinStatistics {
-  double transmittedCosine = 0;        ///< μ_k
+  double transmittedCosine = 0;  ///< μ_k
   std::uint64_t rays = 0;
-  Estimate subsurface;                 ///< P(subsurface exit | entered along μ_k)
+  Estimate subsurface;  ///< P(subsurface exit | entered along μ_k)
   Estimate transmitted;
   Estimate absorbed;
   Estimate eventLimited;
   std::array<Estimate, kLayerCount> absorbedByLayer;
-  Estimate meanExitRadiusCm;           ///< over subsurface exits
+  Estimate meanExitRadiusCm;  ///< over subsurface exits
 };
 
 class ExitTable {
@@ -81,14 +81,16 @@ class ExitTable {
   static constexpr double kMaxRadiusCm = 30;
 
   /// The key of the table for these inputs (FNV-1a 64 of every field, skin/core/content_hash.h).
-  static std::uint64_t key(const SkinOptics& optics, const WalkOptions& walk, const ExitTableSettings& settings);
+  static std::uint64_t key(const SkinOptics& optics, const WalkOptions& walk,
+                           const ExitTableSettings& settings);
   /// Runs the walks. Throws std::invalid_argument for settings out of range (bins < 1 or above
   /// 4096, raysPerBin < 2 or above 2^32) and whatever SkinWalk's constructor throws.
   static ExitTable build(const SkinWalk& walk, const ExitTableSettings& settings);
   /// The table stored at `path` if it exists, is intact and was built for exactly these inputs;
   /// otherwise nullopt with the reason in *whyNot (when not null).
   static std::optional<ExitTable> read(const std::filesystem::path& path, const SkinWalk& walk,
-                                       const ExitTableSettings& settings, std::string* whyNot = nullptr);
+                                       const ExitTableSettings& settings,
+                                       std::string* whyNot = nullptr);
   /// Writes the table atomically. Throws std::runtime_error when the file cannot be written.
   void write(const std::filesystem::path& path) const;
 
@@ -106,7 +108,8 @@ class ExitTable {
   BinStatistics statistics(int bin) const;
 
   // The stored distributions (for tests): the fraction of a bin's subsurface exits per radial
-  // cell (0: [0, kMinRadiusCm), 1..R: log bins, R+1: overflow), per offset-azimuth bin, per polar bin.
+  // cell (0: [0, kMinRadiusCm), 1..R: log bins, R+1: overflow), per offset-azimuth bin, per polar
+  // bin.
   std::vector<double> radialDistribution(int bin) const;
   std::vector<double> offsetAzimuthDistribution(int bin) const;
   std::vector<double> exitPolarDistribution(int bin) const;
@@ -119,8 +122,8 @@ class ExitTable {
   struct Bin {
     std::uint64_t rays = 0, subsurface = 0, transmitted = 0, eventLimited = 0;
     std::array<std::uint64_t, kLayerCount> absorbed{}, absorbedInMelanosome{};
-    std::vector<std::uint64_t> offsetCounts;       ///< (R + 2) × A, radial-major
-    std::vector<std::uint64_t> exitPolarCounts;    ///< P
+    std::vector<std::uint64_t> offsetCounts;            ///< (R + 2) × A, radial-major
+    std::vector<std::uint64_t> exitPolarCounts;         ///< P
     std::vector<std::uint64_t> transmittedPolarCounts;  ///< P
     double largestRadiusCm = 0;
     double radiusSumCm = 0, radiusSquaresSumCm2 = 0;

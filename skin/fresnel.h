@@ -8,14 +8,15 @@ namespace hylios::skin {
 
 /// Reflectance and the cosine of the transmitted angle for one crossing attempt.
 struct FresnelResult {
-  double reflectance = 1;       ///< unpolarised, in [0, 1]; exactly 1 under total internal reflection
-  double cosTransmitted = 0;    ///< cos of the refraction angle (>= 0); 0 under total internal reflection
+  double reflectance = 1;  ///< unpolarised, in [0, 1]; exactly 1 under total internal reflection
+  double cosTransmitted =
+      0;  ///< cos of the refraction angle (>= 0); 0 under total internal reflection
 };
 
 /// Fresnel reflectance and transmitted cosine for light meeting the interface at |cosThetaIncident|
 /// (the cosine between the ray and the interface normal; its sign is ignored) going from index
-/// nIncident into nTransmitted. Average of the s and p intensity reflectances (Born & Wolf, Sec. 1.5).
-/// Returns reflectance 0 when the indices match, 1 beyond the critical angle. Stable at
+/// nIncident into nTransmitted. Average of the s and p intensity reflectances (Born & Wolf,
+/// Sec. 1.5). Returns reflectance 0 when the indices match, 1 beyond the critical angle. Stable at
 /// cos -> 0 (grazing: reflectance -> 1) and cos = 1 (normal: ((n1-n2)/(n1+n2))^2).
 FresnelResult fresnel(double cosThetaIncident, double nIncident, double nTransmitted);
 

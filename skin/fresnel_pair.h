@@ -14,9 +14,11 @@ class FresnelPair {
   FresnelPair() = default;
   /// Light going from index nIncident into nTransmitted (both > 0).
   FresnelPair(double nIncident, double nTransmitted)
-      : ratio_(nIncident / nTransmitted), ratioSquared_(ratio_ * ratio_),
+      : ratio_(nIncident / nTransmitted),
+        ratioSquared_(ratio_ * ratio_),
         oneMinusRatioSquared_((1.0 - ratio_) * (1.0 + ratio_)),
-        relative_(nTransmitted / nIncident), matched_(nIncident == nTransmitted) {}
+        relative_(nTransmitted / nIncident),
+        matched_(nIncident == nTransmitted) {}
 
   /// Reflectance at |cosIncident| (sign ignored); cosTransmitted receives the refraction cosine
   /// (0 under total internal reflection, where the reflectance is exactly 1). Matched indices

@@ -6,8 +6,8 @@
 
 namespace hylios::skin {
 
-InterfaceCrossing crossPlaneInterfaceZ(const Vec3& direction, double nIncident,
-                                       double nTransmitted, Rng& rng) {
+InterfaceCrossing crossPlaneInterfaceZ(const Vec3& direction, double nIncident, double nTransmitted,
+                                       Rng& rng) {
   if (nIncident == nTransmitted) return {direction, true};
   const FresnelResult f = fresnel(direction.z, nIncident, nTransmitted);
   if (f.reflectance >= 1.0 || rng.uniform() < f.reflectance)

@@ -19,8 +19,8 @@ struct InterfaceCrossing {
 /// refracted (x, y scaled by n1/n2; z keeps its sign). Matched indices pass straight through and
 /// total internal reflection reflects, both without drawing a random number; otherwise exactly
 /// one rng.uniform() is drawn.
-InterfaceCrossing crossPlaneInterfaceZ(const Vec3& direction, double nIncident,
-                                       double nTransmitted, Rng& rng);
+InterfaceCrossing crossPlaneInterfaceZ(const Vec3& direction, double nIncident, double nTransmitted,
+                                       Rng& rng);
 
 /// The same for a plane of any unit normal (either orientation), e.g. a microfacet normal.
 InterfaceCrossing crossInterface(const Vec3& direction, const Vec3& normal, double nIncident,

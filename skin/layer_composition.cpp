@@ -6,9 +6,12 @@ ConcentrationUnit absorberConcentrationUnit(Absorber absorber) {
   switch (absorber) {
     case Absorber::Water:
     case Absorber::Lipid:
-    case Absorber::Keratin: return ConcentrationUnit::VolumeFraction;
-    case Absorber::UrocanicAcid: return ConcentrationUnit::MolarConcentration;
-    default: return ConcentrationUnit::MassConcentration;
+    case Absorber::Keratin:
+      return ConcentrationUnit::VolumeFraction;
+    case Absorber::UrocanicAcid:
+      return ConcentrationUnit::MolarConcentration;
+    default:
+      return ConcentrationUnit::MassConcentration;
   }
 }
 

@@ -10,11 +10,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "skin/fresnel.h"
-#include "skin/sampling/henyey_greenstein.h"
-#include "skin/interface_crossing.h"
-#include "skin/core/vector3.h"
 #include "skin/core/constants.h"
+#include "skin/core/vector3.h"
+#include "skin/fresnel.h"
+#include "skin/interface_crossing.h"
+#include "skin/sampling/henyey_greenstein.h"
 
 namespace hylios::skin {
 namespace {
@@ -51,7 +51,9 @@ Vec3 scatterHenyeyGreenstein(const Vec3& direction, double g, Rng& rng) {
 // Hemispherical specular reflectance 2 * integral_0^1 R(mu) mu dmu by composite Simpson's rule,
 // split at the critical cosine where R has a kink (light from a denser ambient).
 double hemisphericalReflectance(double nIncident, double nTransmitted) {
-  auto integrand = [&](double mu) { return 2.0 * mu * fresnelReflectance(mu, nIncident, nTransmitted); };
+  auto integrand = [&](double mu) {
+    return 2.0 * mu * fresnelReflectance(mu, nIncident, nTransmitted);
+  };
   auto simpson = [&](double a, double b) {
     constexpr int kIntervals = 1 << 14;  // even
     const double h = (b - a) / kIntervals;
@@ -125,7 +127,8 @@ SlabWalker::SlabWalker(const SlabProblem& problem, AbsorptionScheme scheme) : sc
     out.g = in.anisotropyG;
     out.n = in.refractiveIndex;
     out.nAbove = i == 0 ? problem.refractiveIndexAbove : problem.layers[i - 1].refractiveIndex;
-    out.nBelow = i + 1 == count ? problem.refractiveIndexBelow : problem.layers[i + 1].refractiveIndex;
+    out.nBelow =
+        i + 1 == count ? problem.refractiveIndexBelow : problem.layers[i + 1].refractiveIndex;
     layers_.push_back(out);
   }
   diffuseIncidence_ = problem.diffuseIncidence;
@@ -221,7 +224,8 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
       scores.layerAbsorptance[k] += deposited;
       weight -= deposited;
       if (weight < kRouletteThreshold) {
-        if (weight == 0.0 || rng.uniform() >= 1.0 / kRouletteFactor) return;  // weight lost to roulette
+        if (weight == 0.0 || rng.uniform() >= 1.0 / kRouletteFactor)
+          return;  // weight lost to roulette
         weight *= kRouletteFactor;
       }
     }
@@ -271,7 +275,8 @@ SlabResult simulateLayeredSlab(const SlabProblem& problem, const SlabRunOptions&
                       [&](const tbb::blocked_range<std::uint64_t>& range) {
                         for (std::uint64_t c = range.begin(); c != range.end(); ++c) {
                           const std::uint64_t first = (firstChunk + c) * kPhotonsPerChunk;
-                          const std::uint64_t last = std::min(options.photons, first + kPhotonsPerChunk);
+                          const std::uint64_t last =
+                              std::min(options.photons, first + kPhotonsPerChunk);
                           traceChunk(walker, options.seed, first, last, batch[c]);
                         }
                       });

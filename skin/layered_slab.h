@@ -19,10 +19,10 @@ namespace hylios::skin {
 /// One homogeneous layer.
 struct SlabLayer {
   double refractiveIndex = 1.0;
-  double muA_perCm = 0.0;        ///< absorption coefficient
-  double muS_perCm = 0.0;        ///< scattering coefficient
-  double anisotropyG = 0.0;      ///< Henyey–Greenstein mean cosine, -1 < g < 1
-  double thicknessCm = 0.0;      ///< >= 0; +infinity allowed for the last layer (semi-infinite)
+  double muA_perCm = 0.0;    ///< absorption coefficient
+  double muS_perCm = 0.0;    ///< scattering coefficient
+  double anisotropyG = 0.0;  ///< Henyey–Greenstein mean cosine, -1 < g < 1
+  double thicknessCm = 0.0;  ///< >= 0; +infinity allowed for the last layer (semi-infinite)
 };
 
 /// The whole problem: layers from top to bottom between ambient indices.
@@ -30,7 +30,7 @@ struct SlabProblem {
   double refractiveIndexAbove = 1.0;
   double refractiveIndexBelow = 1.0;  ///< unused when the last layer is semi-infinite
   std::vector<SlabLayer> layers;
-  double incidenceAngleDeg = 0.0;     ///< polar angle of the incoming beam in the ambient, [0, 90)
+  double incidenceAngleDeg = 0.0;  ///< polar angle of the incoming beam in the ambient, [0, 90)
   /// true: diffuse (cosine-weighted, Lambertian) illumination from above instead of the beam;
   /// incidenceAngleDeg is then ignored. Gives adding-doubling's URU/UTU.
   bool diffuseIncidence = false;
@@ -47,10 +47,10 @@ enum class AbsorptionScheme { Analog, WeightWithRoulette };
 
 /// One packet's scores, in units of the incident power (the specular part is not in them).
 struct PhotonScores {
-  double diffuseReflectance = 0;        ///< weight leaving through the top surface
-  double transmittance = 0;             ///< weight leaving through the bottom surface
-  double unscatteredTransmittance = 0;  ///< the part of transmittance that never scattered
-  std::vector<double> layerAbsorptance; ///< weight absorbed per layer
+  double diffuseReflectance = 0;         ///< weight leaving through the top surface
+  double transmittance = 0;              ///< weight leaving through the bottom surface
+  double unscatteredTransmittance = 0;   ///< the part of transmittance that never scattered
+  std::vector<double> layerAbsorptance;  ///< weight absorbed per layer
 };
 
 /// Traces single packets through a validated problem. Immutable after construction, so one walker
@@ -59,8 +59,8 @@ class SlabWalker {
  public:
   SlabWalker(const SlabProblem& problem, AbsorptionScheme scheme);
   /// Fresnel reflectance of the top surface for the incoming light (deterministic: for diffuse
-  /// light the hemispherical average 2 * integral of R(mu) mu dmu); packets start inside with weight
-  /// 1 - specularReflectance().
+  /// light the hemispherical average 2 * integral of R(mu) mu dmu); packets start inside with
+  /// weight 1 - specularReflectance().
   double specularReflectance() const { return specularReflectance_; }
   /// For diffuse incidence: the cosine (in the ambient) of one packet's incoming direction, drawn
   /// from the density of the light that enters, 2 mu (1 - R(mu)) / (1 - specularReflectance()).

@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "skin/sampling/exponential_polar_sampling.h"
 #include "skin/melanosome_path_lengths.h"
+#include "skin/sampling/exponential_polar_sampling.h"
 #include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/spheroid.h"
 
@@ -34,17 +34,18 @@ MelanosomeLayer::MelanosomeLayer(double semiMinor, double semiMajor, double inte
   muA_perMinorAxis_ = interiorMuA * semiMinor;
 }
 
-MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer, MelanosomeAbsorption absorption)
-    : MelanosomeLayer(optics[layer].melanosome.semiMinorAxisCm, optics[layer].melanosome.semiMajorAxisCm,
-                      optics.melanosomeInteriorMuA_perCm, optics[layer].refractiveIndex,
-                      optics.melaninRefractiveIndex) {
+MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer,
+                                 MelanosomeAbsorption absorption)
+    : MelanosomeLayer(optics[layer].melanosome.semiMinorAxisCm,
+                      optics[layer].melanosome.semiMajorAxisCm, optics.melanosomeInteriorMuA_perCm,
+                      optics[layer].refractiveIndex, optics.melaninRefractiveIndex) {
   const MelanosomeOptics& m = optics[layer].melanosome;
   inComplexes_ = m.inComplexes;
   if (inComplexes_) {
     if (!(m.melanosomesPerComplex >= 0 && m.melanosomesPerComplex < 1e9))
-      throw std::invalid_argument("melanosome interaction: " + std::to_string(m.melanosomesPerComplex) +
-                                  " melanosomes per complex in " + std::string(layerName(layer)) +
-                                  " is outside [0, 1e9)");
+      throw std::invalid_argument(
+          "melanosome interaction: " + std::to_string(m.melanosomesPerComplex) +
+          " melanosomes per complex in " + std::string(layerName(layer)) + " is outside [0, 1e9)");
     const double whole = std::floor(m.melanosomesPerComplex);
     wholeCount_ = static_cast<unsigned>(whole);
     fractionalCount_ = m.melanosomesPerComplex - whole;
@@ -54,7 +55,8 @@ MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer, Melanoso
                                                 meanAngleRad_ <= kMaxExponentialMeanAngleRad);
   if (!angleOk)
     throw std::invalid_argument("melanosome interaction: mean scattering angle " +
-                                std::to_string(meanAngleRad_) + " rad must be 0 or in [1e-300, 1e6]");
+                                std::to_string(meanAngleRad_) +
+                                " rad must be 0 or in [1e-300, 1e6]");
   if (absorption == MelanosomeAbsorption::Tabulated)
     tabulate(optics[layer].refractiveIndex, optics.melaninRefractiveIndex);
 }
@@ -62,14 +64,18 @@ MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer, Melanoso
 void MelanosomeLayer::tabulate(double nLayer, double nMelanin) {
   tabulated_ = true;
   if (muA_perMinorAxis_ == 0) return;  // clear melanosomes never absorb: no table needed
-  const auto table = MelanosomePathLengths::shared(melanosomeTableKey(geometry_.aspect), melanosomeTableKey(nMelanin / nLayer));
+  const auto table = MelanosomePathLengths::shared(melanosomeTableKey(geometry_.aspect),
+                                                   melanosomeTableKey(nMelanin / nLayer));
   const double one = table->absorptionProbability(muA_perMinorAxis_);  // one pass over the table
-  absorbedByWhole_ = MelanosomePathLengths::absorptionByCount(one, wholeCount_);  // count 1 when dispersed
+  absorbedByWhole_ =
+      MelanosomePathLengths::absorptionByCount(one, wholeCount_);  // count 1 when dispersed
   absorbedByWholePlusOne_ = MelanosomePathLengths::absorptionByCount(one, wholeCount_ + 1);
 }
 
 double MelanosomeLayer::tabulatedAbsorption(unsigned count) const {
-  if (!tabulated_) throw std::logic_error("MelanosomeLayer::tabulatedAbsorption: the layer traces its melanosomes");
+  if (!tabulated_)
+    throw std::logic_error(
+        "MelanosomeLayer::tabulatedAbsorption: the layer traces its melanosomes");
   if (count == wholeCount_) return absorbedByWhole_;
   if (count == wholeCount_ + 1 && inComplexes_) return absorbedByWholePlusOne_;
   throw std::invalid_argument("MelanosomeLayer::tabulatedAbsorption: an interaction meets " +
@@ -113,7 +119,8 @@ MelanosomeEvent MelanosomeLayer::interact(const Vec3& direction, Rng& rng) const
   }
   const PolarCosSin theta = sampleExponentialPolarCosSin(meanAngleRad_, rng);  // Algorithm 2
   const Azimuth phi = sampleAzimuth(rng);
-  event.direction = directionAbout(direction, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
+  event.direction =
+      directionAbout(direction, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
   return event;
 }
 
@@ -121,7 +128,8 @@ bool absorbedInMelanosome(const Vec3& direction, double semiMinorCm, double semi
                           double interiorMuA_perCm, double nLayer, double nMelanin, Rng& rng) {
   if (!(std::fabs(dot(direction, direction) - 1.0) <= 1e-6))
     throw std::invalid_argument("absorbedInMelanosome: the direction is not a unit vector");
-  return MelanosomeLayer(semiMinorCm, semiMajorCm, interiorMuA_perCm, nLayer, nMelanin).absorbedInOne(rng);
+  return MelanosomeLayer(semiMinorCm, semiMajorCm, interiorMuA_perCm, nLayer, nMelanin)
+      .absorbedInOne(rng);
 }
 
 }  // namespace hylios::skin

@@ -22,12 +22,12 @@
 // interaction absorb the ray with probability 1 − q^count, q from the layer's path-length table
 // (skin/melanosome_path_lengths.h), drawn with one uniform instead of tracing each melanosome.
 #pragma once
+#include "skin/core/random.h"
+#include "skin/core/vector3.h"
 #include "skin/fresnel_pair.h"
 #include "skin/layer.h"
 #include "skin/melanosome_internal_walk.h"
-#include "skin/core/random.h"
 #include "skin/skin_optics.h"
-#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 
@@ -69,9 +69,9 @@ class MelanosomeLayer {
   MelanosomeGeometry geometry_;  // γ = c/a, 1/γ, epidermis → melanin and back
   double muA_perMinorAxis_ = 0;  // interior coefficient × a (chords are in units of a)
   bool inComplexes_ = false;
-  unsigned wholeCount_ = 1;      // floor(m)
-  double fractionalCount_ = 0;   // m − floor(m)
-  double meanAngleRad_ = 0;      // θo of Algorithm 2
+  unsigned wholeCount_ = 1;     // floor(m)
+  double fractionalCount_ = 0;  // m − floor(m)
+  double meanAngleRad_ = 0;     // θo of Algorithm 2
   bool tabulated_ = false;
   double absorbedByWhole_ = 0;         // tabulated: 1 − q^floor(m)
   double absorbedByWholePlusOne_ = 0;  // tabulated: 1 − q^(floor(m) + 1)

@@ -12,10 +12,10 @@
 #pragma once
 #include <cmath>
 
-#include "skin/fresnel_pair.h"
-#include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/core/random.h"
 #include "skin/core/vector3.h"
+#include "skin/fresnel_pair.h"
+#include "skin/sampling/polar_rejection_sampling.h"
 
 namespace hylios::skin {
 
@@ -62,7 +62,8 @@ MelanosomeWalkEnd walkInsideMelanosome(const MelanosomeGeometry& g, Rng& rng, On
   const double nx = sinAlpha * inverseLength, nz = imageZ * inverseLength;
   const DiskPoint disk = sampleUnitDisk(rng);
   const double depth = std::sqrt(1.0 - disk.radiusSquared);
-  Vec3 image{disk.x * nz - depth * nx, disk.y, -disk.x * nx - depth * nz};  // the entry point's image
+  Vec3 image{disk.x * nz - depth * nx, disk.y,
+             -disk.x * nx - depth * nz};  // the entry point's image
   Vec3 normal = detail::melanosomeNormalAtImage(image, g.inverseAspect);
   double cosTransmitted = 0;
   const double entryReflectance = g.entering.reflectance(dot(incoming, normal), cosTransmitted);
@@ -70,7 +71,8 @@ MelanosomeWalkEnd walkInsideMelanosome(const MelanosomeGeometry& g, Rng& rng, On
   Vec3 d = g.entering.refract(incoming, normal, cosTransmitted);
   for (int bounce = 0; bounce < kMaxMelanosomeBounces; ++bounce) {
     // Exit: |P + tD|² = 1 in the image, D the image of d; t is also the body-frame path length
-    // (the map is linear and d is unit). The two root forms avoid cancellation for either sign of β.
+    // (the map is linear and d is unit). The two root forms avoid cancellation for either sign of
+    // β.
     const Vec3 imageD{d.x, d.y, d.z * g.inverseAspect};
     const double alpha = dot(imageD, imageD), beta = dot(image, imageD);
     const double offset = dot(image, image) - 1.0;  // ≈ 0: on the surface

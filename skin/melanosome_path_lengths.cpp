@@ -7,8 +7,8 @@
 #include <string>
 #include <tuple>
 
-#include "skin/melanosome_internal_walk.h"
 #include "skin/core/random.h"
+#include "skin/melanosome_internal_walk.h"
 
 namespace hylios::skin {
 namespace {
@@ -34,7 +34,8 @@ void requireTableInputs(double aspect, double indexRatio, std::size_t sampleCoun
 }
 }  // namespace
 
-MelanosomePathLengths::MelanosomePathLengths(double aspect, double indexRatio, std::size_t sampleCount)
+MelanosomePathLengths::MelanosomePathLengths(double aspect, double indexRatio,
+                                             std::size_t sampleCount)
     : aspect_(aspect), indexRatio_(indexRatio) {
   requireTableInputs(aspect, indexRatio, sampleCount);
   MelanosomeGeometry geometry;
@@ -93,8 +94,8 @@ double MelanosomePathLengths::reflectedAtEntryFraction() const {
   return static_cast<double>(reflectedAtEntry_) / static_cast<double>(lengths_.size());
 }
 
-std::shared_ptr<const MelanosomePathLengths> MelanosomePathLengths::shared(double aspect, double indexRatio,
-                                                                           std::size_t sampleCount) {
+std::shared_ptr<const MelanosomePathLengths> MelanosomePathLengths::shared(
+    double aspect, double indexRatio, std::size_t sampleCount) {
   requireTableInputs(aspect, indexRatio, sampleCount);  // before any comparison (NaN keys)
   using Key = std::tuple<double, double, std::size_t>;
   static std::mutex mutex;
@@ -103,7 +104,8 @@ std::shared_ptr<const MelanosomePathLengths> MelanosomePathLengths::shared(doubl
   const Key key{aspect, indexRatio, sampleCount};
   auto it = tables.find(key);
   if (it != tables.end()) return it->second;
-  // Built under the lock (a few milliseconds, once per key); a constructor that throws stores nothing.
+  // Built under the lock (a few milliseconds, once per key); a constructor that throws stores
+  // nothing.
   auto table = std::make_shared<const MelanosomePathLengths>(aspect, indexRatio, sampleCount);
   tables.emplace(key, table);
   return table;

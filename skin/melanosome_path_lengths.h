@@ -30,7 +30,8 @@ class MelanosomePathLengths {
 
   /// Samples `sampleCount` path lengths. Throws std::invalid_argument for an aspect outside
   /// [1, 1e6], a non-positive or non-finite index ratio, or fewer than 2 samples.
-  MelanosomePathLengths(double aspect, double indexRatio, std::size_t sampleCount = kDefaultSampleCount);
+  MelanosomePathLengths(double aspect, double indexRatio,
+                        std::size_t sampleCount = kDefaultSampleCount);
 
   double aspect() const { return aspect_; }
   double indexRatio() const { return indexRatio_; }
@@ -55,8 +56,8 @@ class MelanosomePathLengths {
 
   /// The process-wide table for (γ, ρ, N), built on first use (thread-safe; keyed by the exact
   /// values given). The same key always gives the same table (one fixed random stream).
-  static std::shared_ptr<const MelanosomePathLengths> shared(double aspect, double indexRatio,
-                                                             std::size_t sampleCount = kDefaultSampleCount);
+  static std::shared_ptr<const MelanosomePathLengths> shared(
+      double aspect, double indexRatio, std::size_t sampleCount = kDefaultSampleCount);
 
  private:
   double aspect_, indexRatio_;

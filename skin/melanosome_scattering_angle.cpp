@@ -1,9 +1,10 @@
 #include "skin/melanosome_scattering_angle.h"
-#include "skin/core/constants.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 

@@ -16,9 +16,9 @@ enum class RayleighPolarizabilityForm {
 };
 
 struct RayleighParameters {
-  double radiusNm = 100.0;                ///< r, scatterer radius [Jac96]
-  double relativeIndex = 1.55 / 1.33;     ///< η, scatterer index over medium index [Jac96]
-  double volumeFraction = 0.22;           ///< the 0.22 of Eq. 5 (so D = 0.22 / particle volume)
+  double radiusNm = 100.0;             ///< r, scatterer radius [Jac96]
+  double relativeIndex = 1.55 / 1.33;  ///< η, scatterer index over medium index [Jac96]
+  double volumeFraction = 0.22;        ///< the 0.22 of Eq. 5 (so D = 0.22 / particle volume)
   RayleighPolarizabilityForm form = RayleighPolarizabilityForm::Paper;
 };
 
@@ -31,6 +31,6 @@ double rayleighPolarizabilityFactor(const RayleighParameters& parameters);
 /// μs^R(λ) of Eq. 4 in cm⁻¹ for a wavelength in nm. Throws std::invalid_argument for a
 /// non-positive or non-finite wavelength or parameter.
 double rayleighScatteringCoefficient_perCm(double wavelengthNm,
-                                          const RayleighParameters& parameters = {});
+                                           const RayleighParameters& parameters = {});
 
 }  // namespace hylios::skin

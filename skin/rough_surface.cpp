@@ -13,7 +13,8 @@ Vec3 RoughSurface::facingNormal(const Vec3& direction, const Vec3& macroNormal, 
   for (int attempt = 0; attempt < kMaxNormalRedraws; ++attempt) {
     const PolarCosSin theta = polar_.sample(rng);
     const Azimuth phi = sampleAzimuth(rng);
-    const Vec3 m = directionAbout(macroNormal, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
+    const Vec3 m =
+        directionAbout(macroNormal, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
     if (dot(direction, m) < 0) return m;
   }
   return macroNormal;  // the macro normal always faces a ray that crosses the plane

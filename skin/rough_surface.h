@@ -8,13 +8,13 @@
 // After kMaxSurfaceBounces attempts the smooth macro-surface normal is used, which always ends it.
 //
 // θs is drawn by the rejection sampler of skin/sampling/polar_rejection_sampling.h (same density as
-// skin/sampling/surface_normal_sampling.h's inversion, several times cheaper); RoughSurface keeps its
-// constants for one aspect ratio, the free functions build one per call.
+// skin/sampling/surface_normal_sampling.h's inversion, several times cheaper); RoughSurface keeps
+// its constants for one aspect ratio, the free functions build one per call.
 #pragma once
-#include "skin/interface_crossing.h"
-#include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/core/random.h"
 #include "skin/core/vector3.h"
+#include "skin/interface_crossing.h"
+#include "skin/sampling/polar_rejection_sampling.h"
 
 namespace hylios::skin {
 
@@ -25,7 +25,8 @@ class RoughSurface {
   /// Throws std::invalid_argument for s outside [1e-100, 1e10].
   explicit RoughSurface(double aspectRatio);
   /// See crossRoughSurface.
-  InterfaceCrossing cross(const Vec3& direction, double nIncident, double nTransmitted, Rng& rng) const;
+  InterfaceCrossing cross(const Vec3& direction, double nIncident, double nTransmitted,
+                          Rng& rng) const;
   /// See sampleFacingSurfaceNormal.
   Vec3 facingNormal(const Vec3& direction, const Vec3& macroNormal, Rng& rng) const;
 

@@ -8,6 +8,7 @@ namespace hylios::skin {
 
 enum class SkinMode { Walk, Table };
 
-inline constexpr EnumNames<SkinMode, 2> kSkinModeNames{{{SkinMode::Walk, "walk"}, {SkinMode::Table, "table"}}};
+inline constexpr EnumNames<SkinMode, 2> kSkinModeNames{
+    {{SkinMode::Walk, "walk"}, {SkinMode::Table, "table"}}};
 
 }  // namespace hylios::skin

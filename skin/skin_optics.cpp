@@ -18,9 +18,12 @@ constexpr double kCmPerUm = 1e-4;
 /// Complex diameter over the (scaled) full major axis (Sec. 4.2.2 [SGPF69]).
 double complexDiameterOverMajorAxis(MelanosomeArrangement arrangement) {
   switch (arrangement) {
-    case MelanosomeArrangement::LightComplexes: return 2.0;
-    case MelanosomeArrangement::ModerateComplexes: return 1.0;
-    case MelanosomeArrangement::Dispersed: return 0.0;
+    case MelanosomeArrangement::LightComplexes:
+      return 2.0;
+    case MelanosomeArrangement::ModerateComplexes:
+      return 1.0;
+    case MelanosomeArrangement::Dispersed:
+      return 0.0;
   }
   throw std::logic_error("unknown melanosome arrangement");
 }
@@ -28,8 +31,8 @@ double complexDiameterOverMajorAxis(MelanosomeArrangement arrangement) {
 double checkedSpecificAbsorption(const SpectralSource& spectra, Absorber a, double nm) {
   const double zeta = spectra.specificAbsorption(a, nm);
   if (!std::isfinite(zeta) || zeta < 0)
-    throw SpectralDataError(fmt::format("specific absorption of {} at {} nm is {}",
-                                        absorberName(a), nm, zeta));
+    throw SpectralDataError(
+        fmt::format("specific absorption of {} at {} nm is {}", absorberName(a), nm, zeta));
   return zeta;
 }
 
@@ -38,20 +41,24 @@ double checkedSpecificAbsorption(const SpectralSource& spectra, Absorber a, doub
 SpectralSource spectralSourceOf(const SpectralDatabase& spectra) {
   for (Absorber a : kAllAbsorbers)
     if (SpectralDatabase::concentrationUnit(a) != absorberConcentrationUnit(a))
-      throw std::logic_error(fmt::format(
-          "spectral data express {} per a different concentration unit than "
-          "layer_composition.h uses",
-          absorberName(a)));
+      throw std::logic_error(
+          fmt::format("spectral data express {} per a different concentration unit than "
+                      "layer_composition.h uses",
+                      absorberName(a)));
   return {[&spectra](Absorber a, double nm) { return spectra.specificAbsorption(a, nm); },
           [&spectra](double nm) { return spectra.waterRefractiveIndex(nm); }};
 }
 
 double melanosomeAxisScale(Layer layer) {
   switch (layer) {
-    case Layer::StratumGranulosum: return 0.25;  // Sec. 5, degradation [NZS*06]
-    case Layer::StratumSpinosum: return 0.5;
-    case Layer::StratumBasale: return 1.0;
-    default: return 0.0;
+    case Layer::StratumGranulosum:
+      return 0.25;  // Sec. 5, degradation [NZS*06]
+    case Layer::StratumSpinosum:
+      return 0.5;
+    case Layer::StratumBasale:
+      return 1.0;
+    default:
+      return 0.0;
   }
 }
 
@@ -73,7 +80,7 @@ MelanosomeOptics layerMelanosomeOptics(const Specimen& s, Layer layer) {
   } else {
     const double surfaceToVolume =
         surfaceToVolumeRatio({m.semiMinorAxisCm, m.semiMajorAxisCm});  // Eq. 7
-    m.mu_perCm = surfaceToVolume * v / 4.0;                              // Eq. 6
+    m.mu_perCm = surfaceToVolume * v / 4.0;                            // Eq. 6
   }
   return m;
 }
@@ -86,10 +93,11 @@ SkinOptics computeSkinOptics(const Specimen& specimen, const SpectralDatabase& s
 SkinOptics computeSkinOptics(const Specimen& specimen, const SpectralSource& spectra,
                              double wavelengthNm, const SkinOpticsOptions& options) {
   if (!std::isfinite(wavelengthNm) || !(wavelengthNm > 0))
-    throw SpectralDataError(fmt::format("wavelength {} nm is not positive and finite",
-                                        wavelengthNm));
+    throw SpectralDataError(
+        fmt::format("wavelength {} nm is not positive and finite", wavelengthNm));
   std::array<double, kAbsorberCount> zeta{};
-  for (Absorber a : kAllAbsorbers) zeta[index(a)] = checkedSpecificAbsorption(spectra, a, wavelengthNm);
+  for (Absorber a : kAllAbsorbers)
+    zeta[index(a)] = checkedSpecificAbsorption(spectra, a, wavelengthNm);
   const double waterIndex = spectra.waterRefractiveIndex(wavelengthNm);
   const double waterIndexAtReference = spectra.waterRefractiveIndex(kRefractiveIndexReferenceNm);
 
@@ -113,8 +121,8 @@ SkinOptics computeSkinOptics(const Specimen& specimen, const SpectralSource& spe
   optics.melanosomeInteriorMuA_perCm =
       zeta[index(Absorber::Eumelanin)] * specimen.melanosomeEumelanin_mgPerMl +
       zeta[index(Absorber::Pheomelanin)] * specimen.melanosomePheomelanin_mgPerMl;
-  optics.melaninRefractiveIndex = dispersedRefractiveIndex(
-      specimen.fixed.melaninRefractiveIndex, waterIndex, waterIndexAtReference);
+  optics.melaninRefractiveIndex = dispersedRefractiveIndex(specimen.fixed.melaninRefractiveIndex,
+                                                           waterIndex, waterIndexAtReference);
   optics.meanScatteringAngleRad = melanosomeMeanScatteringAngleRad(wavelengthNm);
   optics.surfaceAspectRatio = specimen.surfaceFoldAspectRatio;
   return optics;

@@ -1,5 +1,4 @@
 #include "skin/skin_simulation.h"
-#include "skin/core/constants.h"
 
 #include <tbb/parallel_for.h>
 
@@ -8,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {

@@ -11,7 +11,7 @@
 namespace hylios::skin {
 
 struct WalkRunOptions {
-  double incidenceDeg = 0;   ///< polar angle of the incident ray from the surface normal, [0, 90)
+  double incidenceDeg = 0;  ///< polar angle of the incident ray from the surface normal, [0, 90)
   std::uint64_t rays = 100000;
   std::uint64_t seed = 1;
   WalkOptions walk;
@@ -22,7 +22,8 @@ struct WalkRunOptions {
 /// gives the same result alone or within any list.
 std::uint64_t wavelengthStream(double wavelengthNm);
 
-/// The incident direction for a polar angle in degrees (travelling into the skin, in the x–z plane).
+/// The incident direction for a polar angle in degrees (travelling into the skin, in the x–z
+/// plane).
 Vec3 incidentDirection(double incidenceDeg);
 
 /// Traces options.rays rays through the skin of `optics`. Throws std::invalid_argument for an

@@ -1,12 +1,12 @@
 #include "skin/skin_tally.h"
-#include "skin/core/constants.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "skin/core/constants.h"
+
 namespace hylios::skin {
-namespace {
-}
+namespace {}
 
 SkinTally::SkinTally(const TallyOptions& options) : options_(options) {
   if (options.polarBins > 0) {
@@ -20,9 +20,10 @@ SkinTally::SkinTally(const TallyOptions& options) : options_(options) {
 
 std::size_t SkinTally::directionBin(const Vec3& exitDirection) const {
   const double polar = std::acos(std::clamp(std::fabs(exitDirection.z), 0.0, 1.0));  // [0, π/2]
-  const double azimuth = std::atan2(exitDirection.y, exitDirection.x);      // [-π, π]
+  const double azimuth = std::atan2(exitDirection.y, exitDirection.x);               // [-π, π]
   auto bin = [](double value, double lower, double upper, std::size_t count) {
-    const auto b = static_cast<std::size_t>((value - lower) / (upper - lower) * static_cast<double>(count));
+    const auto b =
+        static_cast<std::size_t>((value - lower) / (upper - lower) * static_cast<double>(count));
     return std::min(b, count - 1);
   };
   return bin(polar, 0.0, kPi / 2, options_.polarBins) * options_.azimuthBins +
@@ -72,12 +73,16 @@ void SkinTally::record(const PathScore& score) {
 }
 
 void SkinTally::merge(const SkinTally& other) {
-  for (auto [mine, theirs] : {std::pair{&total_, &other.total_}, {&surface_, &other.surface_},
-                              {&subsurface_, &other.subsurface_}, {&transmitted_, &other.transmitted_},
-                              {&absorbed_, &other.absorbed_}, {&melanosomeAbsorbed_, &other.melanosomeAbsorbed_},
+  for (auto [mine, theirs] : {std::pair{&total_, &other.total_},
+                              {&surface_, &other.surface_},
+                              {&subsurface_, &other.subsurface_},
+                              {&transmitted_, &other.transmitted_},
+                              {&absorbed_, &other.absorbed_},
+                              {&melanosomeAbsorbed_, &other.melanosomeAbsorbed_},
                               {&eventLimited_, &other.eventLimited_}})
     mine->merge(*theirs);
-  for (std::size_t i = 0; i < kLayerCount; ++i) absorbedByLayer_[i].merge(other.absorbedByLayer_[i]);
+  for (std::size_t i = 0; i < kLayerCount; ++i)
+    absorbedByLayer_[i].merge(other.absorbedByLayer_[i]);
   events_ += other.events_;
   if (surfaceDirections_) {
     surfaceDirections_->merge(*other.surfaceDirections_);

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <optional>
 
+#include "skin/core/statistics.h"
 #include "skin/layer.h"
 #include "skin/skin_walk.h"
-#include "skin/core/statistics.h"
 
 namespace hylios::skin {
 
@@ -17,9 +17,9 @@ namespace hylios::skin {
 /// normal) × azimuth φ in [-180°, 180°) measured from the forward direction of the incident ray
 /// (φ = 0: the specular side). Radial: subsurface exit distance from the entry point.
 struct TallyOptions {
-  std::size_t polarBins = 0;    ///< 0: no direction histograms
+  std::size_t polarBins = 0;  ///< 0: no direction histograms
   std::size_t azimuthBins = 1;
-  std::size_t radialBins = 0;   ///< 0: no radial histogram
+  std::size_t radialBins = 0;  ///< 0: no radial histogram
   double maxRadiusCm = 0.5;
 };
 
@@ -29,10 +29,10 @@ struct PathScore {
   PathEnd end = PathEnd::EventLimit;
   Vec3 exitDirection;
   double exitOffsetXCm = 0, exitOffsetYCm = 0;
-  double exitWeight = 0;                          ///< reflected, transmitted or event-limited
-  double surfaceWeight = 0;      ///< reflected at entry by a path that went on (expected value)
+  double exitWeight = 0;     ///< reflected, transmitted or event-limited
+  double surfaceWeight = 0;  ///< reflected at entry by a path that went on (expected value)
   Vec3 surfaceDirection;
-  double absorbed = 0;                            ///< total absorbed (all layers)
+  double absorbed = 0;                                ///< total absorbed (all layers)
   std::array<double, kLayerCount> absorbedByLayer{};  ///< per layer (zeros when not booked)
   double absorbedInMelanosomes = 0;
   std::uint32_t events = 0;
@@ -92,7 +92,8 @@ class SkinTally {
       eventLimited_;
   std::array<RunningStatistic, kLayerCount> absorbedByLayer_{};
   std::uint64_t events_ = 0;
-  std::optional<Histogram> surfaceDirections_, subsurfaceDirections_, transmittedDirections_, radialExits_;
+  std::optional<Histogram> surfaceDirections_, subsurfaceDirections_, transmittedDirections_,
+      radialExits_;
 };
 
 }  // namespace hylios::skin

@@ -32,8 +32,10 @@ SkinWalk::SkinWalk(const SkinOptics& optics, WalkOptions options)
     const double muRayleigh = options.rayleigh ? lo.muRayleigh_perCm : 0.0;
     const double muAPlusMelanosome = lo.muATotal_perCm + muMelanosome;
     if (muMelanosome > 0)
-      melanosomes_[slabCount_] = MelanosomeLayer(
-          optics, layer, options.tabulatedMelanosomes ? MelanosomeAbsorption::Tabulated : MelanosomeAbsorption::Traced);
+      melanosomes_[slabCount_] =
+          MelanosomeLayer(optics, layer,
+                          options.tabulatedMelanosomes ? MelanosomeAbsorption::Tabulated
+                                                       : MelanosomeAbsorption::Traced);
     slabs_[slabCount_++] = Slab{layer,
                                 depthCm,
                                 depthCm + lo.thicknessCm,
@@ -45,12 +47,14 @@ SkinWalk::SkinWalk(const SkinOptics& optics, WalkOptions options)
     depthCm += lo.thicknessCm;
   }
   if (slabCount_ == 0)
-    throw std::invalid_argument("skin walk: every layer has zero thickness; there is no skin to walk in");
+    throw std::invalid_argument(
+        "skin walk: every layer has zero thickness; there is no skin to walk in");
   if (options.roughSurface) roughSurface_.emplace(optics.surfaceAspectRatio);
 }
 
 InterfaceCrossing SkinWalk::crossSurface(const Vec3& d, double nFrom, double nTo, Rng& rng) const {
-  return roughSurface_ ? roughSurface_->cross(d, nFrom, nTo, rng) : crossPlaneInterfaceZ(d, nFrom, nTo, rng);
+  return roughSurface_ ? roughSurface_->cross(d, nFrom, nTo, rng)
+                       : crossPlaneInterfaceZ(d, nFrom, nTo, rng);
 }
 
 InterfaceCrossing SkinWalk::enterFromAir(const Vec3& incidentDirection, Rng& rng) const {
@@ -67,7 +71,8 @@ SkinPath SkinWalk::trace(const Vec3& incidentDirection, Rng& rng, LayerPathLengt
   return path;
 }
 
-SkinPath SkinWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng, LayerPathLengths* lengths) const {
+SkinPath SkinWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng,
+                                LayerPathLengths* lengths) const {
   SkinPath path;
   path.events = 1;
   Vec3 position{0, 0, 0};
@@ -81,11 +86,13 @@ SkinPath SkinWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng, Laye
   };
   Vec3 d = transmittedDirection;
   std::size_t k = 0;
-  bool rayleighAvailable = true;  // Rayleigh acts at most once per pass through the layer (Sec. 4.2.1)
+  bool rayleighAvailable =
+      true;  // Rayleigh acts at most once per pass through the layer (Sec. 4.2.1)
   while (path.events < kMaxEvents) {
     ++path.events;
     const Slab& slab = slabs_[k];
-    const double muTotal = rayleighAvailable ? slab.muTotalWithRayleigh_perCm : slab.muTotalWithoutRayleigh_perCm;
+    const double muTotal =
+        rayleighAvailable ? slab.muTotalWithRayleigh_perCm : slab.muTotalWithoutRayleigh_perCm;
     const double toBoundaryCm = d.z > 0   ? (slab.bottomCm - position.z) / d.z
                                 : d.z < 0 ? (slab.topCm - position.z) / d.z
                                           : kInfinity;
@@ -122,13 +129,15 @@ SkinPath SkinWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng, Laye
     position += d * toBoundaryCm;
     position.z = d.z > 0 ? slab.bottomCm : slab.topCm;
     if (d.z < 0 && k == 0) {  // the skin surface, from inside
-      const InterfaceCrossing exit = crossSurface(d, slab.refractiveIndex, kAirRefractiveIndex, rng);
+      const InterfaceCrossing exit =
+          crossSurface(d, slab.refractiveIndex, kAirRefractiveIndex, rng);
       if (exit.transmitted) return leave(PathEnd::SubsurfaceReflection, exit.direction);
       d = exit.direction;
       continue;
     }
     if (d.z > 0 && k + 1 == slabCount_) {
-      if (options_.deepestLayer == Layer::ReticularDermis) {  // dermis–hypodermis: reflectance 1, diffuse
+      if (options_.deepestLayer ==
+          Layer::ReticularDermis) {  // dermis–hypodermis: reflectance 1, diffuse
         const Vec3 local = sampleCosineHemisphereByDisk(rng);
         d = Vec3{local.x, local.y, -local.z};
         continue;

@@ -18,12 +18,12 @@
 #include <cstdint>
 #include <optional>
 
+#include "skin/core/random.h"
+#include "skin/core/vector3.h"
 #include "skin/layer.h"
 #include "skin/melanosome_interaction.h"
-#include "skin/core/random.h"
 #include "skin/rough_surface.h"
 #include "skin/skin_optics.h"
-#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 
@@ -40,13 +40,14 @@ struct SkinPath {
   PathEnd end = PathEnd::EventLimit;
   Layer layer = Layer::StratumCorneum;  ///< where it was absorbed (PathEnd::Absorbed)
   bool absorbedInMelanosome = false;
-  Vec3 exitDirection;                   ///< outside the skin: z < 0 reflected, z > 0 transmitted
-  double exitOffsetXCm = 0;             ///< lateral exit position relative to the entry point
+  Vec3 exitDirection;        ///< outside the skin: z < 0 reflected, z > 0 transmitted
+  double exitOffsetXCm = 0;  ///< lateral exit position relative to the entry point
   double exitOffsetYCm = 0;
-  std::uint32_t events = 0;             ///< interactions and interface tests on the way
+  std::uint32_t events = 0;  ///< interactions and interface tests on the way
 };
 
-/// Switches for the processes of the walk and the shape of the stack (defaults = the paper's model).
+/// Switches for the processes of the walk and the shape of the stack (defaults = the paper's
+/// model).
 struct WalkOptions {
   bool melanosomes = true;
   bool rayleigh = true;
@@ -86,12 +87,14 @@ class SkinWalk {
 
   /// Follows one ray arriving from air along `incidentDirection` (z > 0). When `lengths` is not
   /// null, the distance travelled in each layer is added to it.
-  SkinPath trace(const Vec3& incidentDirection, Rng& rng, LayerPathLengths* lengths = nullptr) const;
+  SkinPath trace(const Vec3& incidentDirection, Rng& rng,
+                 LayerPathLengths* lengths = nullptr) const;
   /// The first step of trace: the ray from air meets the (rough) skin surface.
   InterfaceCrossing enterFromAir(const Vec3& incidentDirection, Rng& rng) const;
-  /// The rest of trace: a ray that has just crossed into the top layer at the entry point, travelling
-  /// along `transmittedDirection` (z > 0). events starts at 1 (the entry crossing).
-  SkinPath traceEntered(const Vec3& transmittedDirection, Rng& rng, LayerPathLengths* lengths = nullptr) const;
+  /// The rest of trace: a ray that has just crossed into the top layer at the entry point,
+  /// travelling along `transmittedDirection` (z > 0). events starts at 1 (the entry crossing).
+  SkinPath traceEntered(const Vec3& transmittedDirection, Rng& rng,
+                        LayerPathLengths* lengths = nullptr) const;
 
   const SkinOptics& optics() const { return optics_; }
   const WalkOptions& options() const { return options_; }
@@ -103,8 +106,8 @@ class SkinWalk {
     double topCm, bottomCm;
     double refractiveIndex;
     double muA_perCm;
-    double muAPlusMelanosome_perCm;     ///< absorption + melanosome coefficients
-    double muTotalWithRayleigh_perCm;   ///< + Rayleigh (first scattering of a pass)
+    double muAPlusMelanosome_perCm;    ///< absorption + melanosome coefficients
+    double muTotalWithRayleigh_perCm;  ///< + Rayleigh (first scattering of a pass)
     double muTotalWithoutRayleigh_perCm;
   };
   InterfaceCrossing crossSurface(const Vec3& direction, double nFrom, double nTo, Rng& rng) const;

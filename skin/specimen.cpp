@@ -3,6 +3,7 @@
 #include "skin/specimen.h"
 
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@
 #include <limits>
 #include <sstream>
 #include <string_view>
-#include <toml++/toml.h>
 
 #include "skin/core/toml_location.h"
 
@@ -26,9 +26,7 @@ struct Range {
   double max = kInfinity;
   bool minExclusive = false;
 
-  bool contains(double v) const {
-    return (minExclusive ? v > min : v >= min) && v <= max;
-  }
+  bool contains(double v) const { return (minExclusive ? v > min : v >= min) && v <= max; }
   std::string describe() const {
     if (max == kInfinity) return fmt::format("must be {} {}", minExclusive ? ">" : ">=", min);
     return fmt::format("must be in {}{}, {}]", minExclusive ? "(" : "[", min, max);
@@ -79,13 +77,13 @@ const std::vector<Layer> kDermis = {Layer::PapillaryDermis, Layer::ReticularDerm
 std::vector<TableSchema> buildSchema() {
   using FP = FixedParameters;
   std::vector<TableSchema> schema;
-  schema.push_back({"",
-                    {{"surface_fold_aspect_ratio", kPositive,
-                      specimenValue(&Specimen::surfaceFoldAspectRatio, 1.0)},
-                     {"skin_dna_mg_per_ml", kNonNegative, fixedValue(&FP::dna_mgPerMl)},
-                     {"water_reduction_percent", kPercent,
-                      specimenValue(&Specimen::waterReduction, 0.01)}},
-                    {"name"}});
+  schema.push_back(
+      {"",
+       {{"surface_fold_aspect_ratio", kPositive,
+         specimenValue(&Specimen::surfaceFoldAspectRatio, 1.0)},
+        {"skin_dna_mg_per_ml", kNonNegative, fixedValue(&FP::dna_mgPerMl)},
+        {"water_reduction_percent", kPercent, specimenValue(&Specimen::waterReduction, 0.01)}},
+       {"name"}});
   const Layer sc = Layer::StratumCorneum;
   schema.push_back(
       {"stratum_corneum",
@@ -125,19 +123,17 @@ std::vector<TableSchema> buildSchema() {
          specimenValue(&Specimen::melanosomeEumelanin_mgPerMl, 1.0)},
         {"pheomelanin_mg_per_ml", kNonNegative,
          specimenValue(&Specimen::melanosomePheomelanin_mgPerMl, 1.0)},
-        {"refractive_index_at_1300nm", kRefractiveIndex,
-         fixedValue(&FP::melaninRefractiveIndex)}},
+        {"refractive_index_at_1300nm", kRefractiveIndex, fixedValue(&FP::melaninRefractiveIndex)}},
        {"arrangement"}});
   for (Layer l : kDermis)
-    schema.push_back(
-        {std::string(layerName(l)),
-         {{"thickness_cm", kNonNegative, layerArray(&Specimen::thicknessCm, l, 1.0)},
-          {"blood_percent", kPercent, layerArray(&Specimen::bloodFraction, l, 0.01)},
-          {"refractive_index_at_1300nm", kRefractiveIndex,
-           fixedArray(&FP::refractiveIndexAt1300nm, {l}, 1.0)},
-          {"water_percent", kPercent, fixedArray(&FP::waterFraction, {l}, 0.01)},
-          {"lipid_percent", kPercent, fixedArray(&FP::lipidFraction, {l}, 0.01)}},
-         {}});
+    schema.push_back({std::string(layerName(l)),
+                      {{"thickness_cm", kNonNegative, layerArray(&Specimen::thicknessCm, l, 1.0)},
+                       {"blood_percent", kPercent, layerArray(&Specimen::bloodFraction, l, 0.01)},
+                       {"refractive_index_at_1300nm", kRefractiveIndex,
+                        fixedArray(&FP::refractiveIndexAt1300nm, {l}, 1.0)},
+                       {"water_percent", kPercent, fixedArray(&FP::waterFraction, {l}, 0.01)},
+                       {"lipid_percent", kPercent, fixedArray(&FP::lipidFraction, {l}, 0.01)}},
+                      {}});
   schema.push_back(
       {"blood",
        {{"oxygenated_percent", kPercent, specimenValue(&Specimen::oxygenatedBloodFraction, 0.01)},
@@ -168,10 +164,10 @@ const std::vector<TableSchema>& schema() {
 /// quantity given in a unit we do not accept.
 std::string_view unitStem(std::string_view key) {
   static const std::array<std::string_view, 22> suffixes = {
-      "_mg_per_ml", "_g_per_l",  "_mg_per_dl", "_g_per_dl", "_g_per_ml", "_ug_per_ml",
-      "_mol_per_l", "_mmol_per_l", "_umol_per_l", "_at_1300nm", "_percent", "_fraction",
-      "_permille", "_cm",       "_mm",        "_um",        "_nm",       "_m",
-      "_in",       "_ratio",    "_per_cm",    "_per_mm"};
+      "_mg_per_ml", "_g_per_l",    "_mg_per_dl",  "_g_per_dl",  "_g_per_ml", "_ug_per_ml",
+      "_mol_per_l", "_mmol_per_l", "_umol_per_l", "_at_1300nm", "_percent",  "_fraction",
+      "_permille",  "_cm",         "_mm",         "_um",        "_nm",       "_m",
+      "_in",        "_ratio",      "_per_cm",     "_per_mm"};
   std::string_view best = key;
   for (std::string_view suffix : suffixes)
     if (key.size() > suffix.size() && key.substr(key.size() - suffix.size()) == suffix &&
@@ -286,11 +282,17 @@ struct OverrideKey {
 std::vector<OverrideKey> buildOverrideKeys() {
   std::vector<OverrideKey> keys = {
       {"melanosome_percent", kPercent,
-       [](Specimen& s, double v) { for (Layer l : kPigmented) s.melanosomeFraction[index(l)] = v / 100; }},
+       [](Specimen& s, double v) {
+         for (Layer l : kPigmented) s.melanosomeFraction[index(l)] = v / 100;
+       }},
       {"colloidal_melanin_percent", kPercent,
-       [](Specimen& s, double v) { for (Layer l : kPigmented) s.colloidalMelaninFraction[index(l)] = v / 100; }},
+       [](Specimen& s, double v) {
+         for (Layer l : kPigmented) s.colloidalMelaninFraction[index(l)] = v / 100;
+       }},
       {"blood_percent", kPercent,
-       [](Specimen& s, double v) { for (Layer l : kDermis) s.bloodFraction[index(l)] = v / 100; }},
+       [](Specimen& s, double v) {
+         for (Layer l : kDermis) s.bloodFraction[index(l)] = v / 100;
+       }},
       {"water_reduction_percent", kPercent, specimenValue(&Specimen::waterReduction, 0.01)},
       {"oxygenation_percent", kPercent, specimenValue(&Specimen::oxygenatedBloodFraction, 0.01)},
       {"surface_fold_aspect_ratio", kPositive,
@@ -344,8 +346,7 @@ Specimen parseSpecimen(const std::string& tomlText, const std::string& sourceNam
       continue;
     }
     const toml::node* node = root.get(tableSchema.name);
-    if (!node)
-      fail(sourceName, root.source(), fmt::format("missing table [{}]", tableSchema.name));
+    if (!node) fail(sourceName, root.source(), fmt::format("missing table [{}]", tableSchema.name));
     if (!node->is_table())
       fail(sourceName, node->source(),
            fmt::format("'{}' must be a table, got {}", tableSchema.name,
@@ -359,18 +360,17 @@ Specimen parseSpecimen(const std::string& tomlText, const std::string& sourceNam
 
 Specimen loadSpecimen(const std::string& nameOrPath, const std::filesystem::path& specimenDir) {
   std::filesystem::path path = nameOrPath;
-  const bool isName = nameOrPath.find('/') == std::string::npos &&
-                      path.extension() != ".toml";
+  const bool isName = nameOrPath.find('/') == std::string::npos && path.extension() != ".toml";
   if (isName) path = specimenDir / (nameOrPath + ".toml");
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
-    throw SpecimenError(fmt::format("specimen '{}': '{}' is a folder, not a specimen file", nameOrPath,
-                                    path.string()));
+    throw SpecimenError(fmt::format("specimen '{}': '{}' is a folder, not a specimen file",
+                                    nameOrPath, path.string()));
   std::ifstream in(path);
   if (!in) {
     if (isName)
-      throw SpecimenError(fmt::format("unknown specimen '{}': no file '{}'", nameOrPath,
-                                      path.string()));
+      throw SpecimenError(
+          fmt::format("unknown specimen '{}': no file '{}'", nameOrPath, path.string()));
     throw SpecimenError(fmt::format("cannot open specimen file '{}'", path.string()));
   }
   std::stringstream text;
@@ -421,19 +421,19 @@ void validateSpecimen(const Specimen& s) {
                kRefractiveIndex);
     const bool pigmented = isPigmentedEpidermis(l);
     const bool dermis = l == Layer::PapillaryDermis || l == Layer::ReticularDermis;
-    if ((!pigmented && (s.melanosomeFraction[index(l)] > 0 ||
-                        s.colloidalMelaninFraction[index(l)] > 0)) ||
+    if ((!pigmented &&
+         (s.melanosomeFraction[index(l)] > 0 || s.colloidalMelaninFraction[index(l)] > 0)) ||
         (!dermis && s.bloodFraction[index(l)] > 0))
-      throw SpecimenError(fmt::format("specimen '{}': {} holds melanin or blood that the model "
-                                      "places only in the epidermis (melanin) or dermis (blood)",
-                                      s.name, name));
+      throw SpecimenError(
+          fmt::format("specimen '{}': {} holds melanin or blood that the model "
+                      "places only in the epidermis (melanin) or dermis (blood)",
+                      s.name, name));
   }
   checkValue(s, "melanosome major_axis_um", s.melanosomeMajorAxisUm, kPositive);
   checkValue(s, "melanosome minor_axis_um", s.melanosomeMinorAxisUm,
              {0, s.melanosomeMajorAxisUm, true});
   checkValue(s, "melanosome eumelanin_mg_per_ml", s.melanosomeEumelanin_mgPerMl, kNonNegative);
-  checkValue(s, "melanosome pheomelanin_mg_per_ml", s.melanosomePheomelanin_mgPerMl,
-             kNonNegative);
+  checkValue(s, "melanosome pheomelanin_mg_per_ml", s.melanosomePheomelanin_mgPerMl, kNonNegative);
   const FixedParameters& f = s.fixed;
   checkValue(s, "melanin refractive index", f.melaninRefractiveIndex, kRefractiveIndex);
   checkValue(s, "stratum corneum keratin fraction", f.stratumCorneumKeratinFraction, {0, 1, false});

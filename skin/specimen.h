@@ -22,7 +22,8 @@ enum class MelanosomeArrangement {
 
 /// Table 2: values held fixed across specimens.
 struct FixedParameters {
-  std::array<double, kLayerCount> refractiveIndexAt1300nm{};  ///< per layer (epidermal layers share 1.4)
+  std::array<double, kLayerCount>
+      refractiveIndexAt1300nm{};  ///< per layer (epidermal layers share 1.4)
   double melaninRefractiveIndex = 0;
   double bloodHemoglobin_mgPerMl = 0;
   double bloodMethemoglobin_mgPerMl = 0;
@@ -32,7 +33,7 @@ struct FixedParameters {
   double bloodBetaCarotene_mgPerMl = 0;
   double stratumCorneumBetaCarotene_mgPerMl = 0;
   double epidermisBetaCarotene_mgPerMl = 0;
-  std::array<double, kLayerCount> waterFraction{};   ///< per layer, before any water reduction
+  std::array<double, kLayerCount> waterFraction{};  ///< per layer, before any water reduction
   std::array<double, kLayerCount> lipidFraction{};
   double stratumCorneumKeratinFraction = 0;
   double stratumCorneumUrocanicAcid_molPerL = 0;
@@ -40,20 +41,21 @@ struct FixedParameters {
 };
 
 struct Specimen {
-  std::string name;                      ///< e.g. "S1"
-  std::filesystem::path sourceFile;      ///< where it was loaded from (empty if built in code)
-  double surfaceFoldAspectRatio = 0;     ///< s of Sec. 4.3
+  std::string name;                   ///< e.g. "S1"
+  std::filesystem::path sourceFile;   ///< where it was loaded from (empty if built in code)
+  double surfaceFoldAspectRatio = 0;  ///< s of Sec. 4.3
   std::array<double, kLayerCount> thicknessCm{};
-  std::array<double, kLayerCount> melanosomeFraction{};        ///< volume fraction v; 0 outside the epidermis
+  std::array<double, kLayerCount>
+      melanosomeFraction{};  ///< volume fraction v; 0 outside the epidermis
   std::array<double, kLayerCount> colloidalMelaninFraction{};  ///< 0 outside the epidermis
   double melanosomeEumelanin_mgPerMl = 0;
   double melanosomePheomelanin_mgPerMl = 0;
-  double melanosomeMajorAxisUm = 0;      ///< full axis length (Table 1 "dimensions")
+  double melanosomeMajorAxisUm = 0;  ///< full axis length (Table 1 "dimensions")
   double melanosomeMinorAxisUm = 0;
   MelanosomeArrangement arrangement = MelanosomeArrangement::LightComplexes;
-  std::array<double, kLayerCount> bloodFraction{};             ///< 0 outside the dermis
+  std::array<double, kLayerCount> bloodFraction{};  ///< 0 outside the dermis
   double oxygenatedBloodFraction = 0;
-  double waterReduction = 0;             ///< fraction in [0, 1]; every layer's water × (1 − reduction)
+  double waterReduction = 0;  ///< fraction in [0, 1]; every layer's water × (1 − reduction)
   FixedParameters fixed;
 };
 

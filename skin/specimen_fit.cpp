@@ -30,7 +30,8 @@ std::vector<FitQuantity> buildQuantities() {
        "Table 1 span 2-10 um [Dif80, AP82], up to 20 um on most body sites [AP82]"},
       {"epidermis_thickness", "cm", 0.002, 0.015,
        "Table 1 span 21-99 um for the three layers [RR10, Shi07], widened by half"},
-      {"papillary_dermis_thickness", "cm", 0.005, 0.035, "Table 1 span 0.01-0.023 cm [AP81], widened by half"},
+      {"papillary_dermis_thickness", "cm", 0.005, 0.035,
+       "Table 1 span 0.01-0.023 cm [AP81], widened by half"},
       {"reticular_dermis_thickness", "cm", 0.05, 0.3,
        "Table 1 span 0.1-0.2 cm [AP81]; dermis up to 4 mm (Sec. 3 [AP82])"},
   };
@@ -55,14 +56,15 @@ void setProfile(const std::array<double, kLayerCount>& start, std::array<double,
                 const std::array<Layer, N>& layers, double value, bool bySum) {
   const double ref = bySum ? sumOver(start, layers) : maxOver(start, layers);
   for (Layer l : layers) {
-    const double share = ref > 0 ? start[index(l)] / ref
-                                 : (bySum ? 1.0 / static_cast<double>(layers.size()) : 1.0);
+    const double share =
+        ref > 0 ? start[index(l)] / ref : (bySum ? 1.0 / static_cast<double>(layers.size()) : 1.0);
     out[index(l)] = value * share;
   }
 }
 
 /// Solves the symmetric positive system A x = b (n ≤ 9) by Cholesky; false if not positive.
-bool solveCholesky(std::vector<double> a, std::vector<double> b, std::size_t n, std::vector<double>& x) {
+bool solveCholesky(std::vector<double> a, std::vector<double> b, std::size_t n,
+                   std::vector<double>& x) {
   for (std::size_t j = 0; j < n; ++j) {
     double d = a[j * n + j];
     for (std::size_t k = 0; k < j; ++k) d -= a[j * n + k] * a[j * n + k];
@@ -125,16 +127,35 @@ double fitQuantityValue(const Specimen& s, const std::string& name) {
 
 void setFitQuantity(const Specimen& start, Specimen& s, const std::string& name, double v) {
   if (!std::isfinite(v)) throw FitError(fmt::format("{} = {} is not finite", name, v));
-  if (name == "melanosome") return setProfile(start.melanosomeFraction, s.melanosomeFraction, kPigmented, v / 100, false);
+  if (name == "melanosome")
+    return setProfile(start.melanosomeFraction, s.melanosomeFraction, kPigmented, v / 100, false);
   if (name == "colloidal")
-    return setProfile(start.colloidalMelaninFraction, s.colloidalMelaninFraction, kPigmented, v / 100, false);
-  if (name == "blood") return setProfile(start.bloodFraction, s.bloodFraction, kDermis, v / 100, false);
-  if (name == "oxygenation") { s.oxygenatedBloodFraction = v / 100; return; }
-  if (name == "water_reduction") { s.waterReduction = v / 100; return; }
-  if (name == "stratum_corneum_thickness") { s.thicknessCm[index(Layer::StratumCorneum)] = v; return; }
-  if (name == "epidermis_thickness") return setProfile(start.thicknessCm, s.thicknessCm, kPigmented, v, true);
-  if (name == "papillary_dermis_thickness") { s.thicknessCm[index(Layer::PapillaryDermis)] = v; return; }
-  if (name == "reticular_dermis_thickness") { s.thicknessCm[index(Layer::ReticularDermis)] = v; return; }
+    return setProfile(start.colloidalMelaninFraction, s.colloidalMelaninFraction, kPigmented,
+                      v / 100, false);
+  if (name == "blood")
+    return setProfile(start.bloodFraction, s.bloodFraction, kDermis, v / 100, false);
+  if (name == "oxygenation") {
+    s.oxygenatedBloodFraction = v / 100;
+    return;
+  }
+  if (name == "water_reduction") {
+    s.waterReduction = v / 100;
+    return;
+  }
+  if (name == "stratum_corneum_thickness") {
+    s.thicknessCm[index(Layer::StratumCorneum)] = v;
+    return;
+  }
+  if (name == "epidermis_thickness")
+    return setProfile(start.thicknessCm, s.thicknessCm, kPigmented, v, true);
+  if (name == "papillary_dermis_thickness") {
+    s.thicknessCm[index(Layer::PapillaryDermis)] = v;
+    return;
+  }
+  if (name == "reticular_dermis_thickness") {
+    s.thicknessCm[index(Layer::ReticularDermis)] = v;
+    return;
+  }
   fitQuantity(name);  // throws
 }
 
@@ -156,8 +177,8 @@ std::vector<Estimate> modelReflectance(const Specimen& specimen, const SpectralD
   return r;
 }
 
-FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, const FitTarget& target,
-                      const FitOptions& options) {
+FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra,
+                      const FitTarget& target, const FitOptions& options) {
   // ---- the request ----
   if (options.free.empty()) throw FitError("no quantity to fit (give at least one free quantity)");
   std::vector<FitQuantity> q;
@@ -169,16 +190,19 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, co
   }
   const std::size_t n = q.size();
   const std::size_t m = target.wavelengthNm.size();
-  if (m == 0) throw FitError("the measured curve has no wavelength in common with the fit's wavelengths");
-  if (target.reflectance.size() != m) throw FitError("measured curve: wavelengths and values differ in number");
+  if (m == 0)
+    throw FitError("the measured curve has no wavelength in common with the fit's wavelengths");
+  if (target.reflectance.size() != m)
+    throw FitError("measured curve: wavelengths and values differ in number");
   for (std::size_t i = 0; i < m; ++i)
     if (!std::isfinite(target.reflectance[i]) || !std::isfinite(target.wavelengthNm[i]))
-      throw FitError(fmt::format("measured curve: value at {} nm is not finite ({})", target.wavelengthNm[i],
-                                 target.reflectance[i]));
+      throw FitError(fmt::format("measured curve: value at {} nm is not finite ({})",
+                                 target.wavelengthNm[i], target.reflectance[i]));
   if (m < n)
-    throw FitError(fmt::format("{} free quantities need at least as many wavelengths; the measured curve "
-                               "overlaps the fit's wavelengths at {}",
-                               n, m));
+    throw FitError(
+        fmt::format("{} free quantities need at least as many wavelengths; the measured curve "
+                    "overlaps the fit's wavelengths at {}",
+                    n, m));
   if (options.rays == 0) throw FitError("the number of rays must be positive");
 
   // ---- parameters in [0, 1] over each bound range ----
@@ -187,7 +211,9 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, co
     const double v = fitQuantityValue(start, q[k].name);
     u[k] = std::clamp((v - q[k].lower) / (q[k].upper - q[k].lower), 0.0, 1.0);
   }
-  const auto physical = [&](std::size_t k, double uk) { return q[k].lower + uk * (q[k].upper - q[k].lower); };
+  const auto physical = [&](std::size_t k, double uk) {
+    return q[k].lower + uk * (q[k].upper - q[k].lower);
+  };
   const auto specimenAt = [&](const std::vector<double>& uu) {
     Specimen s = start;
     for (std::size_t k = 0; k < n; ++k) setFitQuantity(start, s, q[k].name, physical(k, uu[k]));
@@ -195,8 +221,10 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, co
   };
   FitResult result;
   double bestSoFar = std::numeric_limits<double>::infinity();
-  const auto residuals = [&](const std::vector<double>& uu, std::vector<Estimate>* model = nullptr) {
-    const std::vector<Estimate> r = modelReflectance(specimenAt(uu), spectra, target.wavelengthNm, options);
+  const auto residuals = [&](const std::vector<double>& uu,
+                             std::vector<Estimate>* model = nullptr) {
+    const std::vector<Estimate> r =
+        modelReflectance(specimenAt(uu), spectra, target.wavelengthNm, options);
     ++result.evaluations;
     std::vector<double> res(m);
     for (std::size_t i = 0; i < m; ++i) res[i] = r[i].mean - target.reflectance[i];
@@ -237,7 +265,10 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, co
     std::vector<std::size_t> freeIdx;
     for (std::size_t k = 0; k < n; ++k)
       if (!((u[k] <= 0 && g[k] > 0) || (u[k] >= 1 && g[k] < 0))) freeIdx.push_back(k);
-    if (freeIdx.empty()) { result.stopReason = "every quantity at a bound"; break; }
+    if (freeIdx.empty()) {
+      result.stopReason = "every quantity at a bound";
+      break;
+    }
     bool accepted = false;
     double newCost = cost;
     std::vector<double> uNew, rNew;
@@ -245,13 +276,18 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, co
       const std::size_t f = freeIdx.size();
       std::vector<double> a(f * f), b(f), delta;
       double maxDiag = 0;
-      for (std::size_t k = 0; k < f; ++k) maxDiag = std::max(maxDiag, jtj[freeIdx[k] * n + freeIdx[k]]);
+      for (std::size_t k = 0; k < f; ++k)
+        maxDiag = std::max(maxDiag, jtj[freeIdx[k] * n + freeIdx[k]]);
       for (std::size_t k = 0; k < f; ++k) {
         b[k] = -g[freeIdx[k]];
         for (std::size_t l = 0; l < f; ++l) a[k * f + l] = jtj[freeIdx[k] * n + freeIdx[l]];
-        a[k * f + k] += lambda * std::max(jtj[freeIdx[k] * n + freeIdx[k]], 1e-9 * maxDiag + 1e-300);
+        a[k * f + k] +=
+            lambda * std::max(jtj[freeIdx[k] * n + freeIdx[k]], 1e-9 * maxDiag + 1e-300);
       }
-      if (!solveCholesky(a, b, f, delta)) { lambda *= 4; continue; }
+      if (!solveCholesky(a, b, f, delta)) {
+        lambda *= 4;
+        continue;
+      }
       uNew = u;
       double moved = 0;
       for (std::size_t k = 0; k < f; ++k) {
@@ -259,13 +295,21 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, co
         uNew[i] = std::clamp(u[i] + delta[k], 0.0, 1.0);
         moved = std::max(moved, std::fabs(uNew[i] - u[i]));
       }
-      if (moved < 1e-6) { lambda *= 4; continue; }
+      if (moved < 1e-6) {
+        lambda *= 4;
+        continue;
+      }
       rNew = residuals(uNew);
       newCost = sumSquares(rNew);
-      if (newCost < cost) accepted = true;
-      else lambda *= 4;
+      if (newCost < cost)
+        accepted = true;
+      else
+        lambda *= 4;
     }
-    if (!accepted) { result.stopReason = "no step lowers the sum of squares"; break; }
+    if (!accepted) {
+      result.stopReason = "no step lowers the sum of squares";
+      break;
+    }
     const double decrease = (cost - newCost) / cost;
     u = uNew;
     r = rNew;
@@ -303,7 +347,8 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra, co
     std::vector<double> a(f * f, 0);
     for (std::size_t i = 0; i < m; ++i)
       for (std::size_t k = 0; k < f; ++k)
-        for (std::size_t l = 0; l < f; ++l) a[k * f + l] += jac[i * n + interior[k]] * jac[i * n + interior[l]];
+        for (std::size_t l = 0; l < f; ++l)
+          a[k * f + l] += jac[i * n + interior[k]] * jac[i * n + interior[l]];
     for (std::size_t k = 0; k < f; ++k) {
       std::vector<double> e(f, 0), col;
       e[k] = 1;

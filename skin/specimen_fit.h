@@ -10,27 +10,29 @@
 // The free quantities and their physiological bounds (with citations in docs/interpretations.md,
 // "Fitting a specimen"):
 //
-// | name                        | what it sets                                               | unit |
+// | name                        | what it sets                                               | unit
+// |
 // |-----------------------------|------------------------------------------------------------|------|
-// | melanosome                  | melanosome content of the most pigmented epidermal layer;   | %    |
-// |                             | the other layers keep their ratio to it                     |      |
-// | colloidal                   | colloidal melanin content (same profile rule)              | %    |
-// | blood                       | dermal blood content (same profile rule, both dermis layers)| %    |
-// | oxygenation                 | oxygenated fraction of the blood                            | %    |
-// | water_reduction             | water reduction of every layer (Fig. 14's dehydration)      | %    |
-// | stratum_corneum_thickness   | stratum corneum thickness                                   | cm   |
-// | epidermis_thickness         | granulosum + spinosum + basale, ratios kept                 | cm   |
-// | papillary_dermis_thickness  | papillary dermis thickness                                  | cm   |
-// | reticular_dermis_thickness  | reticular dermis thickness                                  | cm   |
+// | melanosome                  | melanosome content of the most pigmented epidermal layer;   | % |
+// |                             | the other layers keep their ratio to it                     | |
+// | colloidal                   | colloidal melanin content (same profile rule)              | % |
+// | blood                       | dermal blood content (same profile rule, both dermis layers)| % |
+// | oxygenation                 | oxygenated fraction of the blood                            | % |
+// | water_reduction             | water reduction of every layer (Fig. 14's dehydration)      | % |
+// | stratum_corneum_thickness   | stratum corneum thickness                                   | cm
+// | | epidermis_thickness         | granulosum + spinosum + basale, ratios kept                 |
+// cm   | | papillary_dermis_thickness  | papillary dermis thickness | cm   | |
+// reticular_dermis_thickness  | reticular dermis thickness                                  | cm |
 //
-// Uncertainties (FittedQuantity::uncertainty) come from the Jacobian at the optimum and the residual
-// variance. They leave out the frozen noise of the fit's own seed, which is correlated across the
-// wavelengths of a bundle, and for the scattering quantities (melanosome content, thicknesses) the
-// finite differences also see path flips. Measured: S2 against NCSU 113 with seeds 1 and 2 agrees
-// within 1-1.5 σ; a synthetic 250-2500 nm curve (S2, basale melanosomes 5 %, blood 1.2 %, water
-// reduction 20 %) gave blood and water within 1 σ but split melanin wrongly (melanosome 3.77 ± 0.03 %,
-// colloidal 1.78 ± 0.02 % against 5 and 1.25) at the same RMS as the noise: σ of the melanosome /
-// colloidal split is then far too small. Refit with another seed to see the spread.
+// Uncertainties (FittedQuantity::uncertainty) come from the Jacobian at the optimum and the
+// residual variance. They leave out the frozen noise of the fit's own seed, which is correlated
+// across the wavelengths of a bundle, and for the scattering quantities (melanosome content,
+// thicknesses) the finite differences also see path flips. Measured: S2 against NCSU 113 with seeds
+// 1 and 2 agrees within 1-1.5 σ; a synthetic 250-2500 nm curve (S2, basale melanosomes 5 %,
+// blood 1.2 %, water reduction 20 %) gave blood and water within 1 σ but split melanin wrongly
+// (melanosome 3.77 ± 0.03 %, colloidal 1.78 ± 0.02 % against 5 and 1.25) at the same RMS as the
+// noise: σ of the melanosome / colloidal split is then far too small. Refit with another seed to
+// see the spread.
 //
 // No command line here (app/fit_command.cpp is the command).
 #pragma once
@@ -55,9 +57,9 @@ class FitError : public std::runtime_error {
 
 /// One quantity a fit may free, with its physiological bounds.
 struct FitQuantity {
-  std::string name;   ///< as given to --free
-  std::string unit;   ///< "%" or "cm"
-  double lower = 0;   ///< in `unit`
+  std::string name;  ///< as given to --free
+  std::string unit;  ///< "%" or "cm"
+  double lower = 0;  ///< in `unit`
   double upper = 0;
   std::string basis;  ///< one line: where the bounds come from (details in docs/interpretations.md)
 };
@@ -70,7 +72,8 @@ const FitQuantity& fitQuantity(const std::string& name);
 double fitQuantityValue(const Specimen& specimen, const std::string& name);
 /// `start` with quantity `name` set to `value` (profiles over layers taken from `start`, so the
 /// ratio between layers survives a value of 0 on the way).
-void setFitQuantity(const Specimen& start, Specimen& specimen, const std::string& name, double value);
+void setFitQuantity(const Specimen& start, Specimen& specimen, const std::string& name,
+                    double value);
 
 /// A measured curve on the fit's wavelengths (already interpolated; same length).
 struct FitTarget {
@@ -79,10 +82,10 @@ struct FitTarget {
 };
 
 struct FitOptions {
-  std::vector<std::string> free;   ///< names of fitQuantities(), each at most once
+  std::vector<std::string> free;  ///< names of fitQuantities(), each at most once
   double incidenceDeg = 45;
-  std::uint64_t rays = 20000;      ///< per wavelength and evaluation
-  std::uint64_t seed = 1;          ///< the same for every evaluation (common random numbers)
+  std::uint64_t rays = 20000;  ///< per wavelength and evaluation
+  std::uint64_t seed = 1;      ///< the same for every evaluation (common random numbers)
   WalkOptions walk = defaultFitWalk();
   int maxIterations = 25;
   /// Stop when an accepted step lowers the sum of squares by less than this fraction.
@@ -109,12 +112,12 @@ struct FittedQuantity {
 };
 
 struct FitResult {
-  Specimen specimen;                     ///< the start specimen with the fitted values
+  Specimen specimen;  ///< the start specimen with the fitted values
   std::vector<FittedQuantity> quantities;
-  std::vector<Estimate> model;           ///< model curve at the optimum, per target wavelength
+  std::vector<Estimate> model;  ///< model curve at the optimum, per target wavelength
   double startRms = 0;
   double rms = 0;
-  std::size_t evaluations = 0;           ///< curve evaluations (each `rays` × wavelengths)
+  std::size_t evaluations = 0;  ///< curve evaluations (each `rays` × wavelengths)
   int iterations = 0;
   std::string stopReason;
 };

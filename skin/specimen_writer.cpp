@@ -12,9 +12,12 @@ std::string percent(double fraction) { return number(fraction * 100.0); }
 
 std::string arrangementName(MelanosomeArrangement a) {
   switch (a) {
-    case MelanosomeArrangement::LightComplexes: return "light_complexes";
-    case MelanosomeArrangement::ModerateComplexes: return "moderate_complexes";
-    case MelanosomeArrangement::Dispersed: return "dispersed";
+    case MelanosomeArrangement::LightComplexes:
+      return "light_complexes";
+    case MelanosomeArrangement::ModerateComplexes:
+      return "moderate_complexes";
+    case MelanosomeArrangement::Dispersed:
+      return "dispersed";
   }
   return "light_complexes";
 }
@@ -23,7 +26,10 @@ std::string quoted(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
     if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') { out += "\\n"; continue; }
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
     out += c;
   }
   return out + "\"";

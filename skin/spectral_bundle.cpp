@@ -21,13 +21,17 @@ struct Range {
   double lowest = 0, highest = 0;
   void reset(double x) { lowest = highest = x; }
   Range with(double x) const { return {std::min(lowest, x), std::max(highest, x)}; }
-  double logSpread() const { return lowest > 0 ? std::log(highest / lowest) : (highest > 0 ? INFINITY : 0.0); }
+  double logSpread() const {
+    return lowest > 0 ? std::log(highest / lowest) : (highest > 0 ? INFINITY : 0.0);
+  }
 };
 }  // namespace
 
 std::vector<std::vector<std::size_t>> groupIntoBundles(const std::vector<SkinOptics>& optics,
-                                                       const WalkOptions& walk, const BundleRule& rule) {
-  if (rule.maxWavelengths == 0) throw std::invalid_argument("bundle rule: at most 0 wavelengths per bundle");
+                                                       const WalkOptions& walk,
+                                                       const BundleRule& rule) {
+  if (rule.maxWavelengths == 0)
+    throw std::invalid_argument("bundle rule: at most 0 wavelengths per bundle");
   std::vector<std::size_t> order(optics.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {

@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include "skin/core/constants.h"
 #include "skin/piecewise_spectrum.h"
 #include "skin/spectral_extensions.h"
 #include "skin/spectral_table.h"
-#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
@@ -349,9 +349,15 @@ SpectralDatabase SpectralDatabase::load(const std::filesystem::path& spectraDir)
   impl->waterIndex = build.water(segelstein, "n_real", false);
   for (Absorber a : kAllAbsorbers) {
     switch (a) {
-      case Absorber::Keratin: impl->spectra.push_back(build.band(a, x.keratin)); break;
-      case Absorber::Dna: impl->spectra.push_back(build.band(a, x.dna)); break;
-      case Absorber::UrocanicAcid: impl->spectra.push_back(build.band(a, x.urocanicAcid)); break;
+      case Absorber::Keratin:
+        impl->spectra.push_back(build.band(a, x.keratin));
+        break;
+      case Absorber::Dna:
+        impl->spectra.push_back(build.band(a, x.dna));
+        break;
+      case Absorber::UrocanicAcid:
+        impl->spectra.push_back(build.band(a, x.urocanicAcid));
+        break;
       case Absorber::Eumelanin:
         impl->spectra.push_back(
             build.melanin(a, "eumelanin_sarna_swartz.csv", x.eumelaninFitMinNm));
@@ -360,11 +366,21 @@ SpectralDatabase SpectralDatabase::load(const std::filesystem::path& spectraDir)
         impl->spectra.push_back(
             build.melanin(a, "pheomelanin_sarna_swartz.csv", x.pheomelaninFitMinNm));
         break;
-      case Absorber::Oxyhemoglobin: impl->spectra.push_back(hemoglobins[0]); break;
-      case Absorber::Deoxyhemoglobin: impl->spectra.push_back(hemoglobins[1]); break;
-      case Absorber::Carboxyhemoglobin: impl->spectra.push_back(hemoglobins[2]); break;
-      case Absorber::Methemoglobin: impl->spectra.push_back(hemoglobins[3]); break;
-      case Absorber::Sulfhemoglobin: impl->spectra.push_back(hemoglobins[4]); break;
+      case Absorber::Oxyhemoglobin:
+        impl->spectra.push_back(hemoglobins[0]);
+        break;
+      case Absorber::Deoxyhemoglobin:
+        impl->spectra.push_back(hemoglobins[1]);
+        break;
+      case Absorber::Carboxyhemoglobin:
+        impl->spectra.push_back(hemoglobins[2]);
+        break;
+      case Absorber::Methemoglobin:
+        impl->spectra.push_back(hemoglobins[3]);
+        break;
+      case Absorber::Sulfhemoglobin:
+        impl->spectra.push_back(hemoglobins[4]);
+        break;
       case Absorber::Bilirubin:
         impl->spectra.push_back(build.carotenoid(a, "bilirubin_photochemcad.csv",
                                                  x.bilirubinMolarMass, x.bilirubinZeroFromNm));
@@ -374,8 +390,12 @@ SpectralDatabase SpectralDatabase::load(const std::filesystem::path& spectraDir)
                                                  x.betaCaroteneMolarMass,
                                                  x.betaCaroteneZeroFromNm));
         break;
-      case Absorber::Water: impl->spectra.push_back(water); break;
-      case Absorber::Lipid: impl->spectra.push_back(build.lipid()); break;
+      case Absorber::Water:
+        impl->spectra.push_back(water);
+        break;
+      case Absorber::Lipid:
+        impl->spectra.push_back(build.lipid());
+        break;
     }
   }
   return SpectralDatabase(std::move(impl));
@@ -389,9 +409,12 @@ ConcentrationUnit SpectralDatabase::concentrationUnit(Absorber absorber) {
   switch (absorber) {
     case Absorber::Keratin:
     case Absorber::Water:
-    case Absorber::Lipid: return ConcentrationUnit::VolumeFraction;
-    case Absorber::UrocanicAcid: return ConcentrationUnit::MolarConcentration;
-    default: return ConcentrationUnit::MassConcentration;
+    case Absorber::Lipid:
+      return ConcentrationUnit::VolumeFraction;
+    case Absorber::UrocanicAcid:
+      return ConcentrationUnit::MolarConcentration;
+    default:
+      return ConcentrationUnit::MassConcentration;
   }
 }
 

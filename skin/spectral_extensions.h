@@ -27,14 +27,14 @@ struct SpectralExtensions {
 
   double cornOilFirstValidNm = 0;
 
-  double bilirubinMolarMass = 0;      ///< g/mol
+  double bilirubinMolarMass = 0;  ///< g/mol
   double bilirubinZeroFromNm = 0;
-  double betaCaroteneMolarMass = 0;   ///< g/mol
+  double betaCaroteneMolarMass = 0;  ///< g/mol
   double betaCaroteneZeroFromNm = 0;
 
-  AbsorptionBand keratin;        ///< per volume fraction of solid keratin
-  AbsorptionBand dna;            ///< per mg/mL
-  AbsorptionBand urocanicAcid;   ///< per mol/L
+  AbsorptionBand keratin;       ///< per volume fraction of solid keratin
+  AbsorptionBand dna;           ///< per mg/mL
+  AbsorptionBand urocanicAcid;  ///< per mol/L
 
   /// Throws SpectralDataError (file:line:column where known) on a parse error, a missing, unknown
   /// or non-numeric key, or inconsistent values.

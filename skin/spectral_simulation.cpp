@@ -19,7 +19,8 @@ struct Chunk {
 /// Records one spectral path into the tallies of its bundle's wavelengths.
 void recordPath(const SpectralPath& path, std::vector<SkinTally*>& tallies) {
   PathScore score = pathScoreOf(path);
-  const bool perWavelengthDirection = path.end == PathEnd::Transmitted && !path.transmittedDirection.empty();
+  const bool perWavelengthDirection =
+      path.end == PathEnd::Transmitted && !path.transmittedDirection.empty();
   for (std::size_t i = 0; i < tallies.size(); ++i) {
     score.exitWeight = path.exitWeight[i];
     score.surfaceWeight = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i];

@@ -32,7 +32,8 @@ void requireShared(bool same, const std::string& what) {
     throw std::invalid_argument("spectral walk: the wavelengths of a bundle must share " + what);
 }
 
-/// log p(θ)·e^{θ/θo}/sinθ of Algorithm 2's law: p(θ) = e^{−θ/θo} sinθ (1 + θo²)/(θo²(1 + e^{−π/θo})).
+/// log p(θ)·e^{θ/θo}/sinθ of Algorithm 2's law: p(θ) = e^{−θ/θo} sinθ (1 + θo²)/(θo²(1 +
+/// e^{−π/θo})).
 double logAngleNormalisation(double meanAngleRad) {
   if (meanAngleRad == 0) return 0;
   const double t2 = meanAngleRad * meanAngleRad;
@@ -57,18 +58,18 @@ class SpectralWalk::State {
     proposalOffset.assign(n, 0.0);
   }
   SpectralPath& path;
-  std::vector<double>& ratio;            ///< scratch for MIS ratios
+  std::vector<double>& ratio;              ///< scratch for MIS ratios
   std::vector<SpectralPath::Stay>& stays;  ///< the stays so far (per-layer absorption only)
   Vec3 position{0, 0, 0};
   Vec3 direction;
   std::size_t slab = 0;
   std::size_t hero = 0;
   bool rayleighAvailable = true;
-  double roulette = 1;  ///< product of 1/P over the roulettes survived
-  double stayCm = 0, stayMelaninCm = 0;  ///< path in the current slab since the stay began
-  std::array<double, kLayerCount> pathCm{};      ///< by slab: path travelled there (λ-free)
-  std::array<double, kLayerCount> melaninCm{};   ///< by slab: path inside melanin (λ-free)
-  std::vector<double> logDensity;        ///< per λ: log p_λ(path) up to a common factor
+  double roulette = 1;                          ///< product of 1/P over the roulettes survived
+  double stayCm = 0, stayMelaninCm = 0;         ///< path in the current slab since the stay began
+  std::array<double, kLayerCount> pathCm{};     ///< by slab: path travelled there (λ-free)
+  std::array<double, kLayerCount> melaninCm{};  ///< by slab: path inside melanin (λ-free)
+  std::vector<double> logDensity;               ///< per λ: log p_λ(path) up to a common factor
   /// Per hero j: log q_j(path) − log p_j(path), q_j the density with which hero j proposed the
   /// path (0 except after a forced transmission, where q_j lacks the Fresnel factor).
   std::vector<double> proposalOffset;
@@ -78,10 +79,12 @@ class SpectralWalk::State {
     const std::size_t n = logDensity.size();
     out.assign(n, 1.0);
     double top = -std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < n; ++j) top = std::max({top, logDensity[j], logDensity[j] + proposalOffset[j]});
+    for (std::size_t j = 0; j < n; ++j)
+      top = std::max({top, logDensity[j], logDensity[j] + proposalOffset[j]});
     if (!std::isfinite(top)) return out.assign(n, 0.0);
     double proposal = 0;
-    for (std::size_t j = 0; j < n; ++j) proposal += std::exp(logDensity[j] + proposalOffset[j] - top);
+    for (std::size_t j = 0; j < n; ++j)
+      proposal += std::exp(logDensity[j] + proposalOffset[j] - top);
     const double scale = static_cast<double>(n) / proposal;
     for (std::size_t i = 0; i < n; ++i) out[i] = std::exp(logDensity[i] - top) * scale;
   }
@@ -97,20 +100,30 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     if (index(layer) > index(options.deepestLayer)) break;
     const LayerOptics& lo = first[layer];
     if (!(lo.thicknessCm > 0)) continue;
-    Slab slab{layer, depthCm, depthCm + lo.thicknessCm, lo.refractiveIndex,
-              options.melanosomes ? lo.melanosome.mu_perCm : 0.0, false, {}, {}, {}, 0.0};
+    Slab slab{layer,
+              depthCm,
+              depthCm + lo.thicknessCm,
+              lo.refractiveIndex,
+              options.melanosomes ? lo.melanosome.mu_perCm : 0.0,
+              false,
+              {},
+              {},
+              {},
+              0.0};
     for (const SkinOptics& o : bundle) {
       requireShared(o[layer].thicknessCm == lo.thicknessCm, "the thickness of " + layerText(layer));
-      requireShared(o[layer].melanosome.mu_perCm == lo.melanosome.mu_perCm &&
-                        o[layer].melanosome.semiMinorAxisCm == lo.melanosome.semiMinorAxisCm &&
-                        o[layer].melanosome.semiMajorAxisCm == lo.melanosome.semiMajorAxisCm &&
-                        o[layer].melanosome.melanosomesPerComplex == lo.melanosome.melanosomesPerComplex,
-                    "the melanosomes of " + layerText(layer));
-      requireShared(sameRatio(o[layer].refractiveIndex / o[Layer::StratumCorneum].refractiveIndex,
-                              lo.refractiveIndex / first[Layer::StratumCorneum].refractiveIndex) &&
-                        sameRatio(o.melaninRefractiveIndex / o[layer].refractiveIndex,
-                                  first.melaninRefractiveIndex / lo.refractiveIndex),
-                    "the index ratios of " + layerText(layer) + " (indices dispersed by one factor)");
+      requireShared(
+          o[layer].melanosome.mu_perCm == lo.melanosome.mu_perCm &&
+              o[layer].melanosome.semiMinorAxisCm == lo.melanosome.semiMinorAxisCm &&
+              o[layer].melanosome.semiMajorAxisCm == lo.melanosome.semiMajorAxisCm &&
+              o[layer].melanosome.melanosomesPerComplex == lo.melanosome.melanosomesPerComplex,
+          "the melanosomes of " + layerText(layer));
+      requireShared(
+          sameRatio(o[layer].refractiveIndex / o[Layer::StratumCorneum].refractiveIndex,
+                    lo.refractiveIndex / first[Layer::StratumCorneum].refractiveIndex) &&
+              sameRatio(o.melaninRefractiveIndex / o[layer].refractiveIndex,
+                        first.melaninRefractiveIndex / lo.refractiveIndex),
+          "the index ratios of " + layerText(layer) + " (indices dispersed by one factor)");
       slab.muA_perCm.push_back(lo.thicknessCm > 0 ? o[layer].muATotal_perCm : 0.0);
       const double rayleigh = options.rayleigh ? o[layer].muRayleigh_perCm : 0.0;
       slab.muRayleigh_perCm.push_back(rayleigh);
@@ -146,7 +159,8 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     depthCm += lo.thicknessCm;
   }
   for (const SkinOptics& o : bundle) {
-    requireShared(o.surfaceAspectRatio == first.surfaceAspectRatio, "the surface fold aspect ratio");
+    requireShared(o.surfaceAspectRatio == first.surfaceAspectRatio,
+                  "the surface fold aspect ratio");
     requireShared((o.meanScatteringAngleRad == 0) == (first.meanScatteringAngleRad == 0),
                   "θo = 0 or θo > 0 (Algorithm 2's law is a point mass at θo = 0)");
     melaninMuA_perCm_.push_back(o.melanosomeInteriorMuA_perCm);
@@ -176,7 +190,8 @@ void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
   s.hero = wavelengthCount_ == 1
                ? 0
                : std::min(wavelengthCount_ - 1,
-                          static_cast<std::size_t>(rng.uniform() * static_cast<double>(wavelengthCount_)));
+                          static_cast<std::size_t>(rng.uniform() *
+                                                   static_cast<double>(wavelengthCount_)));
   s.direction = incidentDirection;
   if (crossSurface(s, false, rng, splitEntryReflection)) return traceEntered(s, rng);
   path.end = PathEnd::SurfaceReflection;
@@ -186,12 +201,14 @@ void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
 
 void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
   const Melanosomes& m = *melanosomes_[k];
-  const unsigned count = m.inComplexes ? m.wholeCount + (rng.uniform() < m.fractionalCount ? 1u : 0u) : 1u;
+  const unsigned count =
+      m.inComplexes ? m.wholeCount + (rng.uniform() < m.fractionalCount ? 1u : 0u) : 1u;
   double chordsOverA = 0;
   for (unsigned i = 0; i < count; ++i) {
     if (m.table) {
       const std::vector<double>& lengths = m.table->pathLengths();
-      const auto pick = static_cast<std::size_t>(rng.uniform() * static_cast<double>(lengths.size()));
+      const auto pick =
+          static_cast<std::size_t>(rng.uniform() * static_cast<double>(lengths.size()));
       chordsOverA += lengths[std::min(pick, lengths.size() - 1)];
     } else {
       walkInsideMelanosome(m.geometry, rng, [&chordsOverA](double chord) {
@@ -201,7 +218,8 @@ void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
     }
   }
   s.stayMelaninCm += chordsOverA * m.semiMinorAxisCm;
-  const PolarCosSin theta = sampleExponentialPolarCosSin(meanAngleRad_[s.hero], rng);  // Algorithm 2
+  const PolarCosSin theta =
+      sampleExponentialPolarCosSin(meanAngleRad_[s.hero], rng);  // Algorithm 2
   if (anglesDiffer_) {
     const double angle = theta.thetaRad;
     for (std::size_t i = 0; i < wavelengthCount_; ++i)
@@ -226,7 +244,8 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
   if (reflect) {
     s.direction = reflectDirection(d, m);
     // From inside beyond the critical angle of the smallest index, every λ reflects totally.
-    const bool totalForAll = fromInside && 1.0 - cosI * cosI >= 1.0 / (smallestSurfaceIndex_ * smallestSurfaceIndex_);
+    const bool totalForAll =
+        fromInside && 1.0 - cosI * cosI >= 1.0 / (smallestSurfaceIndex_ * smallestSurfaceIndex_);
     if (surfaceIndicesDiffer_ && !totalForAll)
       for (std::size_t i = 0; i < wavelengthCount_; ++i) {
         const auto [n1, n2] = indices(i);
@@ -248,8 +267,9 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
     const auto [n1, n2] = indices(i);
     double& logDensity = s.logDensity[i];
     if (delta) {  // a point mass: only wavelengths that refract to the same direction share it
-      logDensity = n2 == nToH && n1 == nFromH ? logDensity + std::log1p(-fresnelReflectance(cosI, n1, n2))
-                                              : -kInfinity;
+      logDensity = n2 == nToH && n1 == nFromH
+                       ? logDensity + std::log1p(-fresnelReflectance(cosI, n1, n2))
+                       : -kInfinity;
       continue;
     }
     // The facet that refracts d into t for these indices: the generalised half vector n1·d − n2·t.
@@ -272,7 +292,8 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
     const double facetDensity = aspectSquared_ * cosFacet * cosFacet + sin2;  // D ∝ this⁻²
     const double jacobianDenominator = n1 * cosD - n2 * cosT;
     logDensity += -2.0 * std::log(facetDensity) + std::log1p(-f.reflectance) +
-                  std::log(n2 * n2 * std::fabs(cosT)) - 2.0 * std::log(std::fabs(jacobianDenominator));
+                  std::log(n2 * n2 * std::fabs(cosT)) -
+                  2.0 * std::log(std::fabs(jacobianDenominator));
     // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
     // lacks its (1 − F), which the MIS denominator must not hold either.
     if (forceTransmission) s.proposalOffset[i] -= std::log1p(-f.reflectance);
@@ -306,8 +327,8 @@ bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitE
     // the ray leaves the surface, every λ scores that reflection with its Fresnel weight at once
     // and the path is forced through the facet (the Fresnel choice is not drawn).
     const Vec3 mirrored = reflectDirection(s.direction, m);
-    const bool split = splitEntry && !fromInside && attempt == 0 && !delta &&
-                       mirrored.z * towardFar < 0;
+    const bool split =
+        splitEntry && !fromInside && attempt == 0 && !delta && mirrored.z * towardFar < 0;
     if (split) {
       s.path.surfaceWeight.resize(wavelengthCount_);
       for (std::size_t i = 0; i < wavelengthCount_; ++i)
@@ -389,7 +410,8 @@ void SpectralWalk::traceEntered(State& s, Rng& rng) const {
     const Slab& slab = slabs_[s.slab];
     Vec3& d = s.direction;
     const bool rayleighHere = s.rayleighAvailable && slab.hasRayleigh;
-    const double muScatter = slab.muMelanosome_perCm + (rayleighHere ? slab.muRayleigh_perCm[s.hero] : 0.0);
+    const double muScatter =
+        slab.muMelanosome_perCm + (rayleighHere ? slab.muRayleigh_perCm[s.hero] : 0.0);
     const double toBoundaryCm = d.z > 0   ? (slab.bottomCm - s.position.z) / d.z
                                 : d.z < 0 ? (slab.topCm - s.position.z) / d.z
                                           : kInfinity;
@@ -402,7 +424,8 @@ void SpectralWalk::traceEntered(State& s, Rng& rng) const {
     const bool rayleighEvent = collides && rng.uniform() * muScatter >= slab.muMelanosome_perCm;
     if (rayleighHere && wavelengthCount_ > 1)
       for (std::size_t i = 0; i < wavelengthCount_; ++i) {
-        s.logDensity[i] += -slab.muRayleigh_perCm[i] * flightCm + (rayleighEvent ? slab.logRayleigh[i] : 0.0);
+        s.logDensity[i] +=
+            -slab.muRayleigh_perCm[i] * flightCm + (rayleighEvent ? slab.logRayleigh[i] : 0.0);
       }
     if (collides) {
       if (!rayleighEvent) {

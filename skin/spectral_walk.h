@@ -3,19 +3,19 @@
 // expectation of the per-wavelength analog walk (skin/skin_walk.h).
 //
 // What depends on λ, and how each dependence is carried (docs/interpretations.md, "Spectral walk"):
-// | dependence                         | treatment                                                   |
+// | dependence                         | treatment |
 // |------------------------------------|-------------------------------------------------------------|
-// | absorption by the layers (Eq. 3)   | weight exp(−μa(λ)·ℓ) per layer stay, never sampled          |
-// | melanin inside melanosomes         | the internal path (λ-free geometry) traced or drawn from the |
-// |                                    | path-length table; weight exp(−μa_mel(λ)·ℓ_melanin)         |
-// | Rayleigh (λ⁻⁴, once per pass)      | sampled with the hero's coefficient; path-density ratio     |
-// | Algorithm 2's θo(λ), 780–1400 nm   | sampled with the hero's θo; path-density ratio              |
-// | rough air–skin surface (n(λ))      | facet drawn once; reflection: Fresnel ratio; transmission:  |
-// |                                    | the hero's refracted direction, density of each λ through   |
-// |                                    | its own generalised half vector (Walter et al. 2007)        |
-// | smooth bottom into a fixed index   | Fresnel ratio; transmitted directions per λ (path ends)     |
-// | layer/layer and melanin/layer      | index ratios do not depend on λ (skin/layer_refractive_     |
-// | interfaces                         | index.h): shared exactly                                    |
+// | absorption by the layers (Eq. 3)   | weight exp(−μa(λ)·ℓ) per layer stay, never sampled | |
+// melanin inside melanosomes         | the internal path (λ-free geometry) traced or drawn from the
+// | |                                    | path-length table; weight exp(−μa_mel(λ)·ℓ_melanin) | |
+// Rayleigh (λ⁻⁴, once per pass)      | sampled with the hero's coefficient; path-density ratio | |
+// Algorithm 2's θo(λ), 780–1400 nm   | sampled with the hero's θo; path-density ratio | | rough
+// air–skin surface (n(λ))      | facet drawn once; reflection: Fresnel ratio; transmission:  | | |
+// the hero's refracted direction, density of each λ through   | | | its own generalised half vector
+// (Walter et al. 2007)        | | smooth bottom into a fixed index   | Fresnel ratio; transmitted
+// directions per λ (path ends)     | | layer/layer and melanin/layer      | index ratios do not
+// depend on λ (skin/layer_refractive_     | | interfaces                         | index.h): shared
+// exactly                                    |
 //
 // Hero-wavelength sampling (Wilkie et al. 2014) with the balance heuristic over the bundle: each
 // path draws its hero uniformly among the bundle's wavelengths and makes every λ-dependent choice
@@ -56,7 +56,8 @@ struct SpectralPath {
   /// Per λ: the weight that leaves with the path (reflectance / transmittance score; for
   /// EventLimit the weight still carried when the walk was stopped).
   std::vector<double> exitWeight;
-  /// Per λ: transmitted directions through a smooth bottom (PathEnd::Transmitted only; depend on λ).
+  /// Per λ: transmitted directions through a smooth bottom (PathEnd::Transmitted only; depend on
+  /// λ).
   std::vector<Vec3> transmittedDirection;
   /// Per λ: the weight reflected by the surface at entry while the path went on into the skin
   /// (empty when the entry was sampled; then a surface reflection is end = SurfaceReflection).
@@ -79,10 +80,10 @@ struct SpectralPath {
   std::vector<double> scratch;
 };
 
-/// Tabulated melanosomes (WalkOptions::tabulatedMelanosomes): each melanosome met draws its internal
-/// path length from a table of this many traced paths (skin/melanosome_path_lengths.h), 4× the
-/// analog table's, so its sampling error (≈ 0.1 % of one melanosome's absorption) stays far below
-/// the noise of any curve.
+/// Tabulated melanosomes (WalkOptions::tabulatedMelanosomes): each melanosome met draws its
+/// internal path length from a table of this many traced paths (skin/melanosome_path_lengths.h), 4×
+/// the analog table's, so its sampling error (≈ 0.1 % of one melanosome's absorption) stays far
+/// below the noise of any curve.
 inline constexpr std::size_t kSpectralMelanosomeTableSamples = std::size_t{1} << 18;
 
 /// Russian roulette: below this largest weight a path survives with probability weight / it.
@@ -105,16 +106,17 @@ class SpectralWalk {
     trace(incidentDirection, rng, path, options_.splitEntryReflection);
   }
   /// The same with the entry split (WalkOptions::splitEntryReflection) chosen per call.
-  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path, bool splitEntryReflection) const;
+  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
+             bool splitEntryReflection) const;
 
  private:
   struct Slab {
     Layer layer;
     double topCm, bottomCm;
-    double referenceIndex;             ///< the index at the first wavelength (ratios are λ-free)
-    double muMelanosome_perCm;         ///< Eq. 6 (λ-free)
-    bool hasRayleigh;                  ///< some λ has a Rayleigh coefficient here
-    std::vector<double> muA_perCm;     ///< per λ
+    double referenceIndex;          ///< the index at the first wavelength (ratios are λ-free)
+    double muMelanosome_perCm;      ///< Eq. 6 (λ-free)
+    bool hasRayleigh;               ///< some λ has a Rayleigh coefficient here
+    std::vector<double> muA_perCm;  ///< per λ
     std::vector<double> muRayleigh_perCm;  ///< per λ (empty without Rayleigh)
     std::vector<double> logRayleigh;       ///< per λ: log muRayleigh_perCm
     double leastMuA_perCm;                 ///< min over λ of muA_perCm
@@ -134,11 +136,12 @@ class SpectralWalk {
   /// skin; returns whether the ray ended on the far side, updating s.direction and densities.
   bool crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry = false) const;
   /// One Fresnel test on facet m (the macro normal when `delta`); true when transmitted.
-  bool crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta, bool fromInside,
-                  Rng& rng, bool forceTransmission = false) const;
+  bool crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta, bool fromInside, Rng& rng,
+                  bool forceTransmission = false) const;
   /// The smooth bottom of a truncated stack into options.belowRefractiveIndex; true when through.
   bool crossBottom(State& s, Rng& rng) const;
-  /// Ends the stay in the current slab: adds its path lengths (and records it for layer absorption).
+  /// Ends the stay in the current slab: adds its path lengths (and records it for layer
+  /// absorption).
   void endStay(State& s) const;
   /// Russian roulette on the largest weight; false when the path was ended.
   bool survivesRoulette(State& s, Rng& rng) const;
@@ -152,11 +155,11 @@ class SpectralWalk {
   std::vector<std::optional<Melanosomes>> melanosomes_;  ///< by slab
   std::vector<double> melaninMuA_perCm_;                 ///< per λ: inside melanosomes
   double leastMelaninMuA_perCm_ = 0;
-  std::vector<double> meanAngleRad_;                     ///< per λ: θo of Algorithm 2
-  std::vector<double> logAngleNormalisation_;            ///< per λ: log of p(θ)·e^{θ/θo}/sinθ
+  std::vector<double> meanAngleRad_;           ///< per λ: θo of Algorithm 2
+  std::vector<double> logAngleNormalisation_;  ///< per λ: log of p(θ)·e^{θ/θo}/sinθ
   bool anglesDiffer_ = false;
-  std::vector<double> surfaceIndex_;                     ///< per λ: the top layer's index
-  std::vector<double> bottomIndex_;                      ///< per λ: the deepest layer's index
+  std::vector<double> surfaceIndex_;  ///< per λ: the top layer's index
+  std::vector<double> bottomIndex_;   ///< per λ: the deepest layer's index
   bool surfaceIndicesDiffer_ = false;
   double smallestSurfaceIndex_ = 1;
   std::optional<SurfaceNormalPolarSampler> facetPolar_;

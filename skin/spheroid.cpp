@@ -1,13 +1,13 @@
 #include "skin/spheroid.h"
-#include "skin/core/constants.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "skin/core/constants.h"
+
 namespace hylios::skin {
-namespace {
-}
+namespace {}
 
 void checkProlateSpheroid(const ProlateSpheroid& s) {
   const double a = s.semiMinorAxis;
@@ -68,8 +68,7 @@ double crossSectionContainingMajorAxis(const ProlateSpheroid& s) {
 
 double projectedArea(const ProlateSpheroid& s, double alphaRad) {
   checkProlateSpheroid(s);
-  if (!std::isfinite(alphaRad))
-    throw std::invalid_argument("projectedArea: angle is not finite");
+  if (!std::isfinite(alphaRad)) throw std::invalid_argument("projectedArea: angle is not finite");
   const double a = s.semiMinorAxis;
   const double c = s.semiMajorAxis;
   const double cosA = std::cos(alphaRad);

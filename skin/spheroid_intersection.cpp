@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "skin/sampling/uniform_sample_check.h"
 #include "skin/core/constants.h"
+#include "skin/sampling/uniform_sample_check.h"
 
 namespace hylios::skin {
 namespace {
@@ -87,13 +87,16 @@ SpheroidExit distanceToSpheroidExit(const ProlateSpheroid& spheroid, const Vec3&
                                     const Vec3& pointInside, const Vec3& direction) {
   const SpheroidFrame frame(spheroid, axis, "distanceToSpheroidExit");
   requireUnit(direction, "direction", "distanceToSpheroidExit");
-  // |P + tD|² = 1 in the image: α t² + 2β t + γ = 0 with γ <= 0 inside; the exit is the root t >= 0.
+  // |P + tD|² = 1 in the image: α t² + 2β t + γ = 0 with γ <= 0 inside; the exit is the root t >=
+  // 0.
   const Vec3 p = frame.toUnitSphere(pointInside);
   const Vec3 d = frame.toUnitSphere(direction);
   const double alpha = dot(d, d), beta = dot(p, d), gamma = dot(p, p) - 1.0;
   if (!(gamma <= kSurfaceTolerance)) {
-    throw std::invalid_argument("distanceToSpheroidExit: the point lies outside the spheroid "
-                                "(normalised radius² = " + std::to_string(gamma + 1.0) + ")");
+    throw std::invalid_argument(
+        "distanceToSpheroidExit: the point lies outside the spheroid "
+        "(normalised radius² = " +
+        std::to_string(gamma + 1.0) + ")");
   }
   // γ <= 0 makes the discriminant non-negative; a point on the surface may leave it at −ulp.
   const double root = std::sqrt(std::fmax(0.0, beta * beta - alpha * gamma));

@@ -14,8 +14,8 @@
 // The entry point is the first crossing of that line, and the outward normal there is the
 // gradient (x/a², y/a², z/c²) normalised. a = c (a sphere) and large c/a need no special case.
 #pragma once
-#include "skin/spheroid.h"
 #include "skin/core/vector3.h"
+#include "skin/spheroid.h"
 
 namespace hylios::skin {
 
@@ -39,7 +39,8 @@ double spheroidSilhouetteArea(const ProlateSpheroid& spheroid, const Vec3& axis,
                               const Vec3& direction);
 
 /// An entry point uniform over the silhouette seen along `direction` (unit) for uniform u1 (radius²
-/// in the unit disk) and u2 (angle 2πu2), both in [0, 1). The normal satisfies normal·direction < 0.
+/// in the unit disk) and u2 (angle 2πu2), both in [0, 1). The normal satisfies normal·direction <
+/// 0.
 SpheroidSurfacePoint sampleSilhouetteEntry(const ProlateSpheroid& spheroid, const Vec3& axis,
                                            const Vec3& direction, double u1, double u2);
 

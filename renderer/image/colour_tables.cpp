@@ -58,7 +58,8 @@ CsvTable readCsv(const std::filesystem::path& path, std::size_t columns) {
     }
     table.rows.push_back(std::move(row));
   }
-  if (table.rows.size() < 2) throw std::runtime_error("colour table '" + path.string() + "' is empty");
+  if (table.rows.size() < 2)
+    throw std::runtime_error("colour table '" + path.string() + "' is empty");
   return table;
 }
 
@@ -75,18 +76,17 @@ void requireUniformGrid(const CsvTable& table, const std::filesystem::path& path
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     if (std::fabs(table.rows[i][0] - (first + step * static_cast<double>(i))) > 1e-9) {
       throw std::runtime_error("colour table '" + path.string() + "': row " + std::to_string(i) +
-                               " is at " + std::to_string(table.rows[i][0]) +
-                               ", not on the grid " + std::to_string(first) + " + k·" +
-                               std::to_string(step));
+                               " is at " + std::to_string(table.rows[i][0]) + ", not on the grid " +
+                               std::to_string(first) + " + k·" + std::to_string(step));
     }
   }
 }
 
 struct ColourTables {
   double cmfStepNm = 1;
-  std::vector<std::array<double, 3>> cmf;   ///< kCie1931MinNm + i·cmfStepNm
+  std::vector<std::array<double, 3>> cmf;  ///< kCie1931MinNm + i·cmfStepNm
   double d65StepNm = 5;
-  std::vector<double> d65;                  ///< kD65MinNm + i·d65StepNm
+  std::vector<double> d65;  ///< kD65MinNm + i·d65StepNm
   std::vector<std::array<double, 3>> colourMap;
   std::array<std::array<double, 3>, 3> xyzToSrgb{};
 };
@@ -122,7 +122,8 @@ std::array<std::array<double, 3>, 3> srgbMatrix() {
   const std::array<double, 3> white{whiteX / whiteY, 1.0, (1.0 - whiteX - whiteY) / whiteY};
   const auto inv = inverse(primaries);
   std::array<double, 3> scale{};
-  for (int i = 0; i < 3; ++i) scale[i] = inv[i][0] * white[0] + inv[i][1] * white[1] + inv[i][2] * white[2];
+  for (int i = 0; i < 3; ++i)
+    scale[i] = inv[i][0] * white[0] + inv[i][1] * white[1] + inv[i][2] * white[2];
   std::array<std::array<double, 3>, 3> rgbToXyz{};
   for (int r = 0; r < 3; ++r)
     for (int p = 0; p < 3; ++p) rgbToXyz[r][p] = primaries[r][p] * scale[p];
@@ -148,7 +149,8 @@ ColourTables loadColourTables() {
   requireUniformGrid(map, mapPath, 0, 255, 1);
   for (const auto& row : map.rows) {
     for (int c = 1; c <= 3; ++c) {
-      if (row[c] < 0 || row[c] > 1) throw std::runtime_error(mapPath.string() + ": entry outside [0, 1]");
+      if (row[c] < 0 || row[c] > 1)
+        throw std::runtime_error(mapPath.string() + ": entry outside [0, 1]");
     }
     tables.colourMap.push_back({row[1], row[2], row[3]});
   }

@@ -12,11 +12,10 @@ namespace {
 void requireInside(const char* what, int x, int y, std::size_t channel, int width, int height,
                    std::size_t channels) {
   if (x < 0 || y < 0 || x >= width || y >= height || channel >= channels) {
-    throw std::out_of_range(std::string(what) + ": pixel (" + std::to_string(x) + ", " +
-                            std::to_string(y) + ") channel " + std::to_string(channel) +
-                            " is outside the " + std::to_string(width) + "x" +
-                            std::to_string(height) + " film with " + std::to_string(channels) +
-                            " channels");
+    throw std::out_of_range(
+        std::string(what) + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+        ") channel " + std::to_string(channel) + " is outside the " + std::to_string(width) + "x" +
+        std::to_string(height) + " film with " + std::to_string(channels) + " channels");
   }
 }
 
@@ -56,8 +55,10 @@ Film::Film(const FilmDesc& desc) : desc_(desc), width_(desc.width), height_(desc
 
 std::size_t Film::sampleBand(double u) const {
   if (!(u >= 0.0 && u < 1.0))
-    throw std::invalid_argument("Film::sampleBand: u = " + std::to_string(u) + " is outside [0, 1)");
-  return std::min(static_cast<std::size_t>(u * static_cast<double>(bandChannels_.size())), bandChannels_.size() - 1);
+    throw std::invalid_argument("Film::sampleBand: u = " + std::to_string(u) +
+                                " is outside [0, 1)");
+  return std::min(static_cast<std::size_t>(u * static_cast<double>(bandChannels_.size())),
+                  bandChannels_.size() - 1);
 }
 
 std::size_t Film::sampleChannel(double u) const {
@@ -93,39 +94,48 @@ void Film::addSample(int x, int y, std::size_t channel, double radiance, bool od
 }
 
 void Film::addBandSample(int x, int y, std::size_t band, const double* radiance, bool odd) {
-  if (!wholeBandSamples_) throw std::logic_error("Film::addBandSample on a film filled one channel per sample");
+  if (!wholeBandSamples_)
+    throw std::logic_error("Film::addBandSample on a film filled one channel per sample");
   const std::vector<std::size_t>& channels = bandChannels_.at(band);
   for (std::size_t i = 0; i < channels.size(); ++i) addSample(x, y, channels[i], radiance[i], odd);
 }
 
 double Film::value(int x, int y, std::size_t channel) const {
   requireInside("Film::value", x, y, channel, width_, height_, channels_.size());
-  return meanOrInterpolated(x, y, channel, [this](std::size_t s) { return sums_[s]; },
-                            [this](std::size_t s) { return counts_[s]; });
+  return meanOrInterpolated(
+      x, y, channel, [this](std::size_t s) { return sums_[s]; },
+      [this](std::size_t s) { return counts_[s]; });
 }
 
 double Film::halfValue(int x, int y, std::size_t channel, bool odd) const {
   requireInside("Film::halfValue", x, y, channel, width_, height_, channels_.size());
   if (odd)
-    return meanOrInterpolated(x, y, channel, [this](std::size_t s) { return oddSums_[s]; },
-                              [this](std::size_t s) { return oddCounts_[s]; });
-  return meanOrInterpolated(x, y, channel, [this](std::size_t s) { return sums_[s] - oddSums_[s]; },
-                            [this](std::size_t s) { return counts_[s] - oddCounts_[s]; });
+    return meanOrInterpolated(
+        x, y, channel, [this](std::size_t s) { return oddSums_[s]; },
+        [this](std::size_t s) { return oddCounts_[s]; });
+  return meanOrInterpolated(
+      x, y, channel, [this](std::size_t s) { return sums_[s] - oddSums_[s]; },
+      [this](std::size_t s) { return counts_[s] - oddCounts_[s]; });
 }
 
 void Film::setCoverage(std::vector<bool> coverage) {
-  if (!coverage.empty() && coverage.size() != static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_))
+  if (!coverage.empty() &&
+      coverage.size() != static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_))
     throw std::invalid_argument("Film::setCoverage: the mask does not match the film");
   coverage_ = std::move(coverage);
 }
 
 template <class Sum, class Count>
-double Film::meanOrInterpolated(int x, int y, std::size_t channel, const Sum& sum, const Count& count) const {
-  if (count(slot(x, y, channel)) > 0) return sum(slot(x, y, channel)) / static_cast<double>(count(slot(x, y, channel)));
+double Film::meanOrInterpolated(int x, int y, std::size_t channel, const Sum& sum,
+                                const Count& count) const {
+  if (count(slot(x, y, channel)) > 0)
+    return sum(slot(x, y, channel)) / static_cast<double>(count(slot(x, y, channel)));
   const std::vector<std::size_t>& band = bandChannels_[channels_[channel].band];
   const std::size_t at = positionInBand_[channel];
   auto sampled = [&](std::size_t c) { return count(slot(x, y, c)) > 0; };
-  auto mean = [&](std::size_t c) { return sum(slot(x, y, c)) / static_cast<double>(count(slot(x, y, c))); };
+  auto mean = [&](std::size_t c) {
+    return sum(slot(x, y, c)) / static_cast<double>(count(slot(x, y, c)));
+  };
   std::size_t below = at, above = at;
   while (below > 0 && !sampled(band[below])) --below;
   while (above + 1 < band.size() && !sampled(band[above])) ++above;
@@ -138,16 +148,19 @@ double Film::meanOrInterpolated(int x, int y, std::size_t channel, const Sum& su
   return (1 - t) * mean(band[below]) + t * mean(band[above]);
 }
 
-void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, std::vector<double> oddSums,
-                        std::vector<std::uint32_t> oddCounts, int samplesPerPixelDone) {
-  if (sums.size() != sums_.size() || counts.size() != counts_.size() || oddSums.size() != sums_.size() ||
-      oddCounts.size() != counts_.size()) {
-    throw std::invalid_argument("film state has " + std::to_string(sums.size()) + " sums and " +
-                                std::to_string(counts.size()) + " counts; this " + std::to_string(width_) + "x" +
-                                std::to_string(height_) + " film with " + std::to_string(channels_.size()) +
-                                " channels needs " + std::to_string(sums_.size()) + " of each (and as many odd ones)");
+void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts,
+                        std::vector<double> oddSums, std::vector<std::uint32_t> oddCounts,
+                        int samplesPerPixelDone) {
+  if (sums.size() != sums_.size() || counts.size() != counts_.size() ||
+      oddSums.size() != sums_.size() || oddCounts.size() != counts_.size()) {
+    throw std::invalid_argument(
+        "film state has " + std::to_string(sums.size()) + " sums and " +
+        std::to_string(counts.size()) + " counts; this " + std::to_string(width_) + "x" +
+        std::to_string(height_) + " film with " + std::to_string(channels_.size()) +
+        " channels needs " + std::to_string(sums_.size()) + " of each (and as many odd ones)");
   }
-  if (samplesPerPixelDone < 0) throw std::invalid_argument("film state has a negative sample count");
+  if (samplesPerPixelDone < 0)
+    throw std::invalid_argument("film state has a negative sample count");
   const std::size_t channels = channels_.size();
   for (std::size_t pixel = 0; pixel * channels < sums.size(); ++pixel) {
     std::uint64_t total = 0;
@@ -156,18 +169,21 @@ void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> cou
       for (std::size_t c : band) {
         const std::size_t s = pixel * channels + c;
         if (!std::isfinite(sums[s]) || !std::isfinite(oddSums[s]) || oddCounts[s] > counts[s])
-          throw std::invalid_argument("film state has a non-finite sum or an odd count above the count at pixel " +
-                                      std::to_string(pixel) + ", channel " + std::to_string(c));
+          throw std::invalid_argument(
+              "film state has a non-finite sum or an odd count above the count at pixel " +
+              std::to_string(pixel) + ", channel " + std::to_string(c));
         if (wholeBandSamples_ && counts[s] != first)
-          throw std::invalid_argument("film state: pixel " + std::to_string(pixel) +
-                                      " has unequal counts within a band filled a whole band per sample");
+          throw std::invalid_argument(
+              "film state: pixel " + std::to_string(pixel) +
+              " has unequal counts within a band filled a whole band per sample");
         if (!wholeBandSamples_) total += counts[s];
       }
       if (wholeBandSamples_) total += first;
     }
     if (total != static_cast<std::uint64_t>(samplesPerPixelDone))
-      throw std::invalid_argument("film state: pixel " + std::to_string(pixel) + " has " + std::to_string(total) +
-                                  " samples, not the " + std::to_string(samplesPerPixelDone) + " it claims");
+      throw std::invalid_argument("film state: pixel " + std::to_string(pixel) + " has " +
+                                  std::to_string(total) + " samples, not the " +
+                                  std::to_string(samplesPerPixelDone) + " it claims");
   }
   sums_ = std::move(sums);
   counts_ = std::move(counts);

@@ -21,7 +21,7 @@ namespace hylios {
 
 struct FilmChannel {
   double wavelengthNm = 0;
-  std::size_t band = 0;      ///< index into FilmDesc::bands
+  std::size_t band = 0;  ///< index into FilmDesc::bands
 };
 
 class Film {
@@ -39,7 +39,9 @@ class Film {
 
   /// The bands' channels (indices into channels()).
   std::size_t bandCount() const { return bandChannels_.size(); }
-  const std::vector<std::size_t>& bandChannels(std::size_t band) const { return bandChannels_.at(band); }
+  const std::vector<std::size_t>& bandChannels(std::size_t band) const {
+    return bandChannels_.at(band);
+  }
   /// A band for uniform u in [0, 1) (every band equally likely).
   std::size_t sampleBand(double u) const;
 
@@ -76,16 +78,20 @@ class Film {
   /// before the first sample. restoreState checks the counts accordingly.
   bool wholeBandSamples() const { return wholeBandSamples_; }
   void setWholeBandSamples(bool whole) { wholeBandSamples_ = whole; }
-  void restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts, std::vector<double> oddSums,
-                    std::vector<std::uint32_t> oddCounts, int samplesPerPixelDone);
+  void restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts,
+                    std::vector<double> oddSums, std::vector<std::uint32_t> oddCounts,
+                    int samplesPerPixelDone);
 
  private:
   /// Mean of a slot from the given sums and counts, interpolated within the band when it has none.
   template <class Sum, class Count>
-  double meanOrInterpolated(int x, int y, std::size_t channel, const Sum& sum, const Count& count) const;
+  double meanOrInterpolated(int x, int y, std::size_t channel, const Sum& sum,
+                            const Count& count) const;
   std::size_t slot(int x, int y, std::size_t channel) const {
-    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) *
-               channels_.size() + channel;
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+            static_cast<std::size_t>(x)) *
+               channels_.size() +
+           channel;
   }
   FilmDesc desc_;
   int width_, height_;

@@ -1,5 +1,8 @@
 #include "renderer/image/film_output.h"
 
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -7,12 +10,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-
-#include "skin/core/atomic_file.h"
 #include "renderer/image/colour_tables.h"
 #include "renderer/image/preview_image.h"
+#include "skin/core/atomic_file.h"
 
 namespace hylios {
 namespace {
@@ -22,9 +22,9 @@ namespace fs = std::filesystem;
 /// Everything derived from the film before any file is written.
 struct FilmImages {
   int width = 0, height = 0;
-  std::vector<std::string> channelNames;   ///< spectral channels, then R, G, B
-  std::vector<float> pixels;               ///< interleaved, channelNames.size() per pixel
-  std::string rgbDescription;              ///< what R, G, B hold (written as an attribute)
+  std::vector<std::string> channelNames;  ///< spectral channels, then R, G, B
+  std::vector<float> pixels;              ///< interleaved, channelNames.size() per pixel
+  std::string rgbDescription;             ///< what R, G, B hold (written as an attribute)
 };
 
 /// Throws if any pixel's channel mean is NaN or infinite, naming the first such pixel.
@@ -56,7 +56,8 @@ std::vector<std::size_t> channelsOfBand(const Film& film, std::size_t band) {
 enum class FilmHalf { All, Even, Odd };
 
 double filmValue(const Film& film, int x, int y, std::size_t c, FilmHalf half) {
-  return half == FilmHalf::All ? film.value(x, y, c) : film.halfValue(x, y, c, half == FilmHalf::Odd);
+  return half == FilmHalf::All ? film.value(x, y, c)
+                               : film.halfValue(x, y, c, half == FilmHalf::Odd);
 }
 
 /// Linear sRGB of a colour band at a pixel: XYZ = k·Σ L(λ_i)·cmf(λ_i)·Δλ, then the sRGB matrix.
@@ -96,10 +97,12 @@ FilmImages buildImages(const Film& film) {
   FilmImages images;
   images.width = film.width();
   images.height = film.height();
-  for (const auto& channel : film.channels()) images.channelNames.push_back(spectralChannelName(channel.wavelengthNm));
+  for (const auto& channel : film.channels())
+    images.channelNames.push_back(spectralChannelName(channel.wavelengthNm));
   images.channelNames.insert(images.channelNames.end(), {"R", "G", "B"});
   const bool coverage = !film.coverage().empty();
-  if (coverage) images.channelNames.push_back("A");  // 1 where the pixel's centre ray sees an object
+  if (coverage)
+    images.channelNames.push_back("A");  // 1 where the pixel's centre ray sees an object
   const auto& bands = film.desc().bands;
   std::size_t rgbBand = 0;
   bool colour = false;
@@ -123,7 +126,8 @@ FilmImages buildImages(const Film& film) {
   for (int y = 0; y < images.height; ++y) {
     for (int x = 0; x < images.width; ++x) {
       float* pixel = &images.pixels[(static_cast<std::size_t>(y) * images.width + x) * stride];
-      for (std::size_t c = 0; c < film.channels().size(); ++c) pixel[c] = static_cast<float>(film.value(x, y, c));
+      for (std::size_t c = 0; c < film.channels().size(); ++c)
+        pixel[c] = static_cast<float>(film.value(x, y, c));
       std::array<double, 3> rgb{};
       if (colour) {
         rgb = pixelLinearSrgb(film, x, y, rgbChannels, bands[rgbBand].stepNm, normalisation);
@@ -133,7 +137,10 @@ FilmImages buildImages(const Film& film) {
       }
       if (coverage)
         pixel[film.channels().size() + 3] =
-            film.coverage()[static_cast<std::size_t>(y) * static_cast<std::size_t>(images.width) + x] ? 1.0f : 0.0f;
+            film.coverage()[static_cast<std::size_t>(y) * static_cast<std::size_t>(images.width) +
+                            x]
+                ? 1.0f
+                : 0.0f;
       for (int i = 0; i < 3; ++i) {
         pixel[film.channels().size() + static_cast<std::size_t>(i)] = static_cast<float>(rgb[i]);
         if (!std::isfinite(pixel[film.channels().size() + static_cast<std::size_t>(i)]))
@@ -152,7 +159,8 @@ FilmImages buildImages(const Film& film) {
 }
 
 void writeExr(const FilmImages& images, const Film& film,
-              const std::vector<std::pair<std::string, std::string>>& extraAttributes, const fs::path& path) {
+              const std::vector<std::pair<std::string, std::string>>& extraAttributes,
+              const fs::path& path) {
   writeAtomically(path, [&](const fs::path& tmp) {
     // The temporary name has no .exr extension: name the format explicitly.
     auto out = OIIO::ImageOutput::create("openexr");
@@ -184,8 +192,8 @@ void writeExr(const FilmImages& images, const Film& film,
 std::string fileSafe(const std::string& name) {
   std::string safe = name.empty() ? std::string("band") : name;
   for (char& ch : safe) {
-    const bool keep = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
-                      ch == '-' || ch == '_' || ch == '.';
+    const bool keep = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
+                      (ch >= '0' && ch <= '9') || ch == '-' || ch == '_' || ch == '.';
     if (!keep) ch = '_';
   }
   return safe;
@@ -209,8 +217,9 @@ OIIO::ImageBuf colourPreview(const Film& film, std::size_t band) {
 }
 
 std::string bandCaption(const BandDesc& band) {
-  return band.isRange() ? formatLabelNumber(band.minNm) + "-" + formatLabelNumber(band.maxNm) + " nm"
-                        : formatLabelNumber(band.minNm) + " nm";
+  return band.isRange()
+             ? formatLabelNumber(band.minNm) + "-" + formatLabelNumber(band.maxNm) + " nm"
+             : formatLabelNumber(band.minNm) + " nm";
 }
 
 }  // namespace
@@ -282,30 +291,35 @@ NoiseImage filmHalfNoiseImage(const Film& film, bool odd) {
   const bool colour = colourBand < bands.size();
   if (colour) {
     for (const char* name : {"R", "G", "B"}) image.groups.push_back(name);
-    image.rgb = {static_cast<int>(bands.size()), static_cast<int>(bands.size()) + 1, static_cast<int>(bands.size()) + 2};
+    image.rgb = {static_cast<int>(bands.size()), static_cast<int>(bands.size()) + 1,
+                 static_cast<int>(bands.size()) + 2};
   }
   const double normalisation = colour ? colourBandNormalisation(bands[colourBand]) : 0.0;
   const FilmHalf half = odd ? FilmHalf::Odd : FilmHalf::Even;
   image.values.reserve(static_cast<std::size_t>(image.width) * image.height * image.groups.size());
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      for (std::size_t b = 0; b < bands.size(); ++b) image.values.push_back(pixelBandMean(film, x, y, channels[b], half));
+      for (std::size_t b = 0; b < bands.size(); ++b)
+        image.values.push_back(pixelBandMean(film, x, y, channels[b], half));
       if (colour)
-        for (double v : pixelLinearSrgb(film, x, y, channels[colourBand], bands[colourBand].stepNm, normalisation, half))
+        for (double v : pixelLinearSrgb(film, x, y, channels[colourBand], bands[colourBand].stepNm,
+                                        normalisation, half))
           image.values.push_back(v);
     }
   return image;
 }
 
 std::vector<GroupNoise> filmNoise(const Film& film) {
-  std::vector<GroupNoise> noise = measureNoise(filmHalfNoiseImage(film, false), filmHalfNoiseImage(film, true),
-                                               film.coverage());
-  for (GroupNoise& g : noise) g.medianRelative /= std::sqrt(2.0);  // the mean of two independent halves
+  std::vector<GroupNoise> noise = measureNoise(filmHalfNoiseImage(film, false),
+                                               filmHalfNoiseImage(film, true), film.coverage());
+  for (GroupNoise& g : noise)
+    g.medianRelative /= std::sqrt(2.0);  // the mean of two independent halves
   return noise;
 }
 
-std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath,
-                                       const std::vector<std::pair<std::string, std::string>>& extraAttributes) {
+std::vector<fs::path> writeFilmOutputs(
+    const Film& film, const fs::path& exrPath,
+    const std::vector<std::pair<std::string, std::string>>& extraAttributes) {
   requireFiniteFilm(film);
   const FilmImages images = buildImages(film);
   std::vector<fs::path> written;
@@ -338,13 +352,13 @@ std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath
     written.push_back(png);
     if (!panel.labelled) {
       // No text rendering here: the colour bar's numbers go to a sidecar file instead.
-      const fs::path sidecar = exrPath.parent_path() / (stem + "_" + fileSafe(bands[b].name) + "_scale.txt");
-      writeTextAtomically(sidecar, "band " + bands[b].name + " (" + bandCaption(bands[b]) +
-                                       "): colour bar from " + formatLabelNumber(bands[b].previewMin) +
-                                       " (left tick) to " + formatLabelNumber(bands[b].previewMax) +
-                                       " (right tick), middle tick " +
-                                       formatLabelNumber(0.5 * (bands[b].previewMin + bands[b].previewMax)) +
-                                       "\n");
+      const fs::path sidecar =
+          exrPath.parent_path() / (stem + "_" + fileSafe(bands[b].name) + "_scale.txt");
+      writeTextAtomically(
+          sidecar, "band " + bands[b].name + " (" + bandCaption(bands[b]) + "): colour bar from " +
+                       formatLabelNumber(bands[b].previewMin) + " (left tick) to " +
+                       formatLabelNumber(bands[b].previewMax) + " (right tick), middle tick " +
+                       formatLabelNumber(0.5 * (bands[b].previewMin + bands[b].previewMax)) + "\n");
       written.push_back(sidecar);
     }
   }
@@ -353,18 +367,22 @@ std::vector<fs::path> writeFilmOutputs(const Film& film, const fs::path& exrPath
 
 void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<std::string>& labels,
                        const fs::path& out, int columns) {
-  if (panels.empty()) throw std::invalid_argument("contact sheet '" + out.string() + "': no panels");
+  if (panels.empty())
+    throw std::invalid_argument("contact sheet '" + out.string() + "': no panels");
   if (labels.size() != panels.size()) {
-    throw std::invalid_argument("contact sheet '" + out.string() + "': " + std::to_string(panels.size()) +
-                                " panels but " + std::to_string(labels.size()) + " labels");
+    throw std::invalid_argument("contact sheet '" + out.string() +
+                                "': " + std::to_string(panels.size()) + " panels but " +
+                                std::to_string(labels.size()) + " labels");
   }
-  if (columns <= 0) throw std::invalid_argument("contact sheet '" + out.string() + "': columns must be positive");
+  if (columns <= 0)
+    throw std::invalid_argument("contact sheet '" + out.string() + "': columns must be positive");
   std::vector<OIIO::ImageBuf> images;
   int cellWidth = 0, cellHeight = 0;
   for (const auto& path : panels) {
     OIIO::ImageBuf image(path.string());
     if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-      throw std::runtime_error("contact sheet: cannot read panel '" + path.string() + "': " + image.geterror());
+      throw std::runtime_error("contact sheet: cannot read panel '" + path.string() +
+                               "': " + image.geterror());
     }
     if (image.nchannels() < 3) {
       const int grey[3] = {0, 0, 0};
@@ -389,10 +407,12 @@ void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<st
     const int x = left + (cellWidth - images[i].spec().width) / 2;
     const int y = top + (cellHeight - images[i].spec().height) / 2;
     if (!OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, images[i])) {
-      throw std::runtime_error("contact sheet: cannot paste '" + panels[i].string() + "': " + sheet.geterror());
+      throw std::runtime_error("contact sheet: cannot paste '" + panels[i].string() +
+                               "': " + sheet.geterror());
     }
-    labelled = drawText(sheet, left + cellWidth / 2, top + cellHeight + fontSize + fontSize / 3, labels[i],
-                        fontSize, TextAnchor::Centre) && labelled;
+    labelled = drawText(sheet, left + cellWidth / 2, top + cellHeight + fontSize + fontSize / 3,
+                        labels[i], fontSize, TextAnchor::Centre) &&
+               labelled;
   }
   writePngAtomically(sheet, out);
   if (!labelled) {

@@ -1,10 +1,11 @@
 // Writing a film: one multi-band OpenEXR in the spectral layout of Fichet, Pacanowski & Wilkie
-// (JCGT 10(3), 2021) — channels "S0.<wavelength with comma decimal separator>nm" (the channel means,
-// float) plus R, G, B preview channels, attributes spectralLayoutVersion = "1.0" and
-// emissiveUnits = "W.m^-2.sr^-1", "hylios:spp" and "hylios:sppTarget" (int), "hylios:exposure", "hylios:rgb" (what
-// R, G, B hold) and "hylios:bands" ("name=365;visible=380:780:10": each band's wavelengths), plus a
-// channel "A" (1 where the pixel's centre ray sees a shape that does not emit, else 0) when the
-// renderer set the film's coverage — and PNG previews beside it, one per band, named <stem>_<band>.png:
+// (JCGT 10(3), 2021) — channels "S0.<wavelength with comma decimal separator>nm" (the channel
+// means, float) plus R, G, B preview channels, attributes spectralLayoutVersion = "1.0" and
+// emissiveUnits = "W.m^-2.sr^-1", "hylios:spp" and "hylios:sppTarget" (int), "hylios:exposure",
+// "hylios:rgb" (what R, G, B hold) and "hylios:bands" ("name=365;visible=380:780:10": each band's
+// wavelengths), plus a channel "A" (1 where the pixel's centre ray sees a shape that does not emit,
+// else 0) when the renderer set the film's coverage — and PNG previews beside it, one per band,
+// named <stem>_<band>.png:
 //   * a colour band (a range covering 400–700 nm): XYZ = k·Σ_i L(λ_i)·cmf(λ_i)·Δλ over its channels
 //     (CIE 1931 2°, Δλ = the band's step), k = colourBandNormalisation(); XYZ → linear sRGB (D65
 //     white); × film exposure; sRGB transfer, clamped to [0, 1]. R, G, B of the EXR are the same

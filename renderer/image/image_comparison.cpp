@@ -33,7 +33,8 @@ struct DifferenceSums {
   }
 };
 
-ChannelDifference finish(const DifferenceSums& sums, const std::string& channel, const std::string& referenceName) {
+ChannelDifference finish(const DifferenceSums& sums, const std::string& channel,
+                         const std::string& referenceName) {
   ChannelDifference result;
   result.channel = channel;
   result.wavelengthNm = parseSpectralChannelName(channel);
@@ -57,7 +58,8 @@ std::string listChannels(const std::vector<std::string>& names) {
 }
 
 /// For each of test's channels, its index in the reference; throws when the sets differ.
-std::vector<std::size_t> matchChannels(const ExrImage& test, const std::string& testName, const ExrImage& reference,
+std::vector<std::size_t> matchChannels(const ExrImage& test, const std::string& testName,
+                                       const ExrImage& reference,
                                        const std::string& referenceName) {
   std::vector<std::string> missingInReference, missingInTest;
   std::vector<std::size_t> match;
@@ -76,9 +78,11 @@ std::vector<std::size_t> matchChannels(const ExrImage& test, const std::string& 
   if (!missingInReference.empty() || !missingInTest.empty()) {
     std::string message = "images have different channels:";
     if (!missingInReference.empty())
-      message += " '" + testName + "' has " + listChannels(missingInReference) + " which '" + referenceName + "' lacks;";
+      message += " '" + testName + "' has " + listChannels(missingInReference) + " which '" +
+                 referenceName + "' lacks;";
     if (!missingInTest.empty())
-      message += " '" + referenceName + "' has " + listChannels(missingInTest) + " which '" + testName + "' lacks;";
+      message += " '" + referenceName + "' has " + listChannels(missingInTest) + " which '" +
+                 testName + "' lacks;";
     message.pop_back();
     throw std::invalid_argument(message);
   }
@@ -115,7 +119,8 @@ std::string csvField(const std::string& text) {
 
 ExrImage readExrImage(const std::filesystem::path& path) {
   auto input = OIIO::ImageInput::open(path.string());
-  if (!input) throw std::runtime_error("cannot read image '" + path.string() + "': " + OIIO::geterror());
+  if (!input)
+    throw std::runtime_error("cannot read image '" + path.string() + "': " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
   ExrImage image;
   image.width = spec.width;
@@ -124,10 +129,12 @@ ExrImage readExrImage(const std::filesystem::path& path) {
   if (image.width <= 0 || image.height <= 0 || image.channelNames.empty()) {
     throw std::runtime_error("image '" + path.string() + "' has no pixels or no channels");
   }
-  image.pixels.resize(static_cast<std::size_t>(image.width) * image.height * image.channelNames.size());
-  if (!input->read_image(0, 0, 0, static_cast<int>(image.channelNames.size()), OIIO::TypeDesc::FLOAT,
-                         image.pixels.data())) {
-    throw std::runtime_error("cannot read the pixels of '" + path.string() + "': " + input->geterror());
+  image.pixels.resize(static_cast<std::size_t>(image.width) * image.height *
+                      image.channelNames.size());
+  if (!input->read_image(0, 0, 0, static_cast<int>(image.channelNames.size()),
+                         OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+    throw std::runtime_error("cannot read the pixels of '" + path.string() +
+                             "': " + input->geterror());
   }
   image.bands = spec.get_string_attribute("hylios:bands");
   image.rgbDescription = spec.get_string_attribute("hylios:rgb");
@@ -150,23 +157,27 @@ ExrImage readExrImage(const std::filesystem::path& path) {
     if (!std::isfinite(image.pixels[i])) {
       const std::size_t pixel = i / image.channelNames.size();
       throw std::runtime_error("image '" + path.string() + "' has a non-finite value at pixel (" +
-                               std::to_string(pixel % image.width) + ", " + std::to_string(pixel / image.width) +
-                               "), channel " + image.channelNames[i % image.channelNames.size()]);
+                               std::to_string(pixel % image.width) + ", " +
+                               std::to_string(pixel / image.width) + "), channel " +
+                               image.channelNames[i % image.channelNames.size()]);
     }
   }
   return image;
 }
 
-ImageComparison compareImages(const ExrImage& test, const std::string& testName, const ExrImage& reference,
-                              const std::string& referenceName, int blockSize) {
+ImageComparison compareImages(const ExrImage& test, const std::string& testName,
+                              const ExrImage& reference, const std::string& referenceName,
+                              int blockSize) {
   if (test.width != reference.width || test.height != reference.height) {
-    throw std::invalid_argument("images differ in size: '" + testName + "' is " + std::to_string(test.width) + "x" +
-                                std::to_string(test.height) + ", '" + referenceName + "' is " +
-                                std::to_string(reference.width) + "x" + std::to_string(reference.height));
+    throw std::invalid_argument("images differ in size: '" + testName + "' is " +
+                                std::to_string(test.width) + "x" + std::to_string(test.height) +
+                                ", '" + referenceName + "' is " + std::to_string(reference.width) +
+                                "x" + std::to_string(reference.height));
   }
   if (blockSize < 1 || blockSize > test.width || blockSize > test.height) {
-    throw std::invalid_argument("block size " + std::to_string(blockSize) + " must be between 1 and the smaller side (" +
-                                std::to_string(std::min(test.width, test.height)) + " pixels) of '" + testName + "'");
+    throw std::invalid_argument(
+        "block size " + std::to_string(blockSize) + " must be between 1 and the smaller side (" +
+        std::to_string(std::min(test.width, test.height)) + " pixels) of '" + testName + "'");
   }
   const std::vector<std::size_t> match = matchChannels(test, testName, reference, referenceName);
   ImageComparison comparison;
@@ -174,7 +185,8 @@ ImageComparison compareImages(const ExrImage& test, const std::string& testName,
   comparison.blocksX = test.width / blockSize;
   comparison.blocksY = test.height / blockSize;
   bool anySpectral = false;
-  for (const auto& name : test.channelNames) anySpectral = anySpectral || parseSpectralChannelName(name).has_value();
+  for (const auto& name : test.channelNames)
+    anySpectral = anySpectral || parseSpectralChannelName(name).has_value();
   DifferenceSums pooled;
   for (std::size_t c = 0; c < test.channelNames.size(); ++c) {
     DifferenceSums sums;
@@ -222,7 +234,8 @@ NoiseImage noiseImageOf(const ExrImage& image) {
     hi = lo;
     if (numbers >> colon && colon == ':') numbers >> hi;
     std::vector<std::size_t> members = inRange(lo, hi);
-    if (members.empty()) throw std::runtime_error("image has no spectral channel for band '" + name + "'");
+    if (members.empty())
+      throw std::runtime_error("image has no spectral channel for band '" + name + "'");
     noise.groups.push_back("band " + name);
     groups.push_back(std::move(members));
   }
@@ -233,13 +246,16 @@ NoiseImage noiseImageOf(const ExrImage& image) {
   std::array<int, 3> rgbChannels{-1, -1, -1};
   if (image.rgbDescription.rfind("linear sRGB", 0) == 0)
     for (int i = 0; i < 3; ++i) {
-      const auto at = std::find(image.channelNames.begin(), image.channelNames.end(), std::string(1, "RGB"[i]));
-      if (at != image.channelNames.end()) rgbChannels[i] = static_cast<int>(at - image.channelNames.begin());
+      const auto at =
+          std::find(image.channelNames.begin(), image.channelNames.end(), std::string(1, "RGB"[i]));
+      if (at != image.channelNames.end())
+        rgbChannels[i] = static_cast<int>(at - image.channelNames.begin());
     }
   const bool colour = rgbChannels[0] >= 0 && rgbChannels[1] >= 0 && rgbChannels[2] >= 0;
   if (colour) {
     for (const char* name : {"R", "G", "B"}) noise.groups.push_back(name);
-    noise.rgb = {static_cast<int>(groups.size()), static_cast<int>(groups.size()) + 1, static_cast<int>(groups.size()) + 2};
+    noise.rgb = {static_cast<int>(groups.size()), static_cast<int>(groups.size()) + 1,
+                 static_cast<int>(groups.size()) + 2};
   }
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -249,23 +265,28 @@ NoiseImage noiseImageOf(const ExrImage& image) {
         noise.values.push_back(sum / static_cast<double>(members.size()));
       }
       if (colour)
-        for (int i = 0; i < 3; ++i) noise.values.push_back(image.value(x, y, static_cast<std::size_t>(rgbChannels[i])));
+        for (int i = 0; i < 3; ++i)
+          noise.values.push_back(image.value(x, y, static_cast<std::size_t>(rgbChannels[i])));
     }
   return noise;
 }
 
-ImageComparison compareImageFiles(const std::filesystem::path& test, const std::filesystem::path& reference,
-                                  int blockSize) {
-  return compareImages(readExrImage(test), test.string(), readExrImage(reference), reference.string(), blockSize);
+ImageComparison compareImageFiles(const std::filesystem::path& test,
+                                  const std::filesystem::path& reference, int blockSize) {
+  return compareImages(readExrImage(test), test.string(), readExrImage(reference),
+                       reference.string(), blockSize);
 }
 
 std::string formatComparisonCsv(const ImageComparison& comparison) {
   std::ostringstream csv;
-  csv << "channel,wavelength_nm,values_compared,rmse,reference_mean_abs,relative_rmse,mean_relative_difference\n";
+  csv << "channel,wavelength_nm,values_compared,rmse,reference_mean_abs,relative_rmse,mean_"
+         "relative_difference\n";
   auto row = [&](const ChannelDifference& d) {
-    csv << csvField(d.channel) << "," << (d.wavelengthNm ? formatNumber(*d.wavelengthNm) : std::string()) << ","
-        << d.valuesCompared << "," << formatNumber(d.rmse) << "," << formatNumber(d.referenceMeanAbs) << ","
-        << formatNumber(d.relativeRmse) << "," << formatNumber(d.meanRelativeDifference) << "\n";
+    csv << csvField(d.channel) << ","
+        << (d.wavelengthNm ? formatNumber(*d.wavelengthNm) : std::string()) << ","
+        << d.valuesCompared << "," << formatNumber(d.rmse) << ","
+        << formatNumber(d.referenceMeanAbs) << "," << formatNumber(d.relativeRmse) << ","
+        << formatNumber(d.meanRelativeDifference) << "\n";
   };
   for (const auto& channel : comparison.channels) row(channel);
   row(comparison.overall);
@@ -275,15 +296,17 @@ std::string formatComparisonCsv(const ImageComparison& comparison) {
 std::string formatComparisonTable(const ImageComparison& comparison) {
   std::ostringstream table;
   table << "compared " << comparison.blocksX << "x" << comparison.blocksY << " values per channel";
-  if (comparison.blockSize > 1) table << " (means of " << comparison.blockSize << "x" << comparison.blockSize << " pixel blocks)";
+  if (comparison.blockSize > 1)
+    table << " (means of " << comparison.blockSize << "x" << comparison.blockSize
+          << " pixel blocks)";
   table << "; overall pools " << comparison.overallChannelCount << " channel(s)\n";
   char line[160];
-  std::snprintf(line, sizeof line, "%-18s %13s %13s %13s %13s\n", "channel", "rmse", "ref_mean_abs", "relative_rmse",
-                "mean_rel_diff");
+  std::snprintf(line, sizeof line, "%-18s %13s %13s %13s %13s\n", "channel", "rmse", "ref_mean_abs",
+                "relative_rmse", "mean_rel_diff");
   table << line;
   auto row = [&](const ChannelDifference& d) {
-    std::snprintf(line, sizeof line, "%-18s %13.6g %13.6g %13.6g %13.6g\n", d.channel.c_str(), d.rmse,
-                  d.referenceMeanAbs, d.relativeRmse, d.meanRelativeDifference);
+    std::snprintf(line, sizeof line, "%-18s %13.6g %13.6g %13.6g %13.6g\n", d.channel.c_str(),
+                  d.rmse, d.referenceMeanAbs, d.relativeRmse, d.meanRelativeDifference);
     table << line;
   };
   row(comparison.overall);

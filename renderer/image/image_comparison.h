@@ -1,5 +1,5 @@
-// Comparing two multi-channel OpenEXR images (a test image and a reference), e.g. a render against a
-// converged render of the same scene. For a channel c with P compared values a_p (test) and b_p
+// Comparing two multi-channel OpenEXR images (a test image and a reference), e.g. a render against
+// a converged render of the same scene. For a channel c with P compared values a_p (test) and b_p
 // (reference), p over pixels or over N×N block means:
 //   RMSE_c                     = sqrt( (1/P) Σ_p (a_p − b_p)² )
 //   reference scale S_c        = (1/P) Σ_p |b_p|
@@ -51,31 +51,32 @@ NoiseImage noiseImageOf(const ExrImage& image);
 /// The differences in one channel (or pooled over channels, for "overall").
 struct ChannelDifference {
   std::string channel;
-  std::optional<double> wavelengthNm;   ///< for spectral channels
-  std::size_t valuesCompared = 0;       ///< P: pixels or blocks (× channels for "overall")
+  std::optional<double> wavelengthNm;  ///< for spectral channels
+  std::size_t valuesCompared = 0;      ///< P: pixels or blocks (× channels for "overall")
   double rmse = 0;
-  double referenceMeanAbs = 0;          ///< S
+  double referenceMeanAbs = 0;  ///< S
   double relativeRmse = 0;
   double meanRelativeDifference = 0;
 };
 
 struct ImageComparison {
   int blockSize = 1;
-  int blocksX = 0, blocksY = 0;          ///< values per channel = blocksX·blocksY
+  int blocksX = 0, blocksY = 0;             ///< values per channel = blocksX·blocksY
   std::vector<ChannelDifference> channels;  ///< in the test image's channel order
-  ChannelDifference overall;             ///< over the spectral channels (all when there are none)
+  ChannelDifference overall;  ///< over the spectral channels (all when there are none)
   std::size_t overallChannelCount = 0;
 };
 
 /// Compares `test` with `reference` (the names are used in error messages). The images must have
 /// the same size and the same channel names (in any order); blockSize ≥ 1 and no larger than
 /// either side. Throws naming the image and what differs otherwise.
-ImageComparison compareImages(const ExrImage& test, const std::string& testName, const ExrImage& reference,
-                              const std::string& referenceName, int blockSize);
+ImageComparison compareImages(const ExrImage& test, const std::string& testName,
+                              const ExrImage& reference, const std::string& referenceName,
+                              int blockSize);
 
 /// Reads both files and compares them.
-ImageComparison compareImageFiles(const std::filesystem::path& test, const std::filesystem::path& reference,
-                                  int blockSize);
+ImageComparison compareImageFiles(const std::filesystem::path& test,
+                                  const std::filesystem::path& reference, int blockSize);
 
 /// CSV: channel,wavelength_nm,values_compared,rmse,reference_mean_abs,relative_rmse,
 /// mean_relative_difference — one row per channel, then "overall" (wavelength empty). Channel

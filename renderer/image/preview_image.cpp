@@ -1,16 +1,16 @@
 #include "renderer/image/preview_image.h"
 
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-
-#include "skin/core/atomic_file.h"
 #include "renderer/image/colour_tables.h"
+#include "skin/core/atomic_file.h"
 
 namespace hylios {
 namespace {
@@ -19,10 +19,9 @@ namespace {
 /// fonts-dejavu-core), else "" (OpenImageIO's own search for a default font).
 std::string fontName() {
   static const std::string name = [] {
-    const char* candidates[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-                                "/usr/share/fonts/TTF/DejaVuSans.ttf",
-                                "/usr/share/fonts/dejavu/DejaVuSans.ttf",
-                                "/usr/local/share/fonts/DejaVuSans.ttf"};
+    const char* candidates[] = {
+        "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf",
+        "/usr/share/fonts/dejavu/DejaVuSans.ttf", "/usr/local/share/fonts/DejaVuSans.ttf"};
     for (const char* path : candidates) {
       std::error_code error;
       if (std::filesystem::is_regular_file(path, error)) return std::string(path);
@@ -142,7 +141,8 @@ void writePngAtomically(const OIIO::ImageBuf& image, const std::filesystem::path
         for (int c = 0; c < 3; ++c) {
           const float v = row[static_cast<std::size_t>(x) * image.nchannels() +
                               static_cast<std::size_t>(std::min(c, image.nchannels() - 1))];
-          if (std::isnan(v)) throw std::runtime_error("NaN in preview image '" + path.string() + "'");
+          if (std::isnan(v))
+            throw std::runtime_error("NaN in preview image '" + path.string() + "'");
           pixels[(static_cast<std::size_t>(y) * width + x) * 3 + c] =
               static_cast<unsigned char>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
         }

@@ -5,11 +5,11 @@
 // Text needs a FreeType-enabled OpenImageIO and a font; textRenderingAvailable() says whether this
 // machine has both. Without them labels are skipped and callers put the numbers in a sidecar file.
 #pragma once
+#include <OpenImageIO/imagebuf.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <OpenImageIO/imagebuf.h>
 
 namespace hylios {
 
@@ -31,7 +31,7 @@ OIIO::ImageBuf makeCanvas(int width, int height);
 /// kMinPseudoColourWidth wide so that the bar stays readable for tiny films.
 struct PseudoColourPanel {
   OIIO::ImageBuf image;
-  bool labelled = false;   ///< the min/max numbers were drawn as text
+  bool labelled = false;  ///< the min/max numbers were drawn as text
 };
 inline constexpr int kMinPseudoColourWidth = 200;
 PseudoColourPanel pseudoColourPanel(const std::vector<double>& values, int width, int height,

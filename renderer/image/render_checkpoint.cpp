@@ -75,7 +75,8 @@ class ByteReader {
   std::uint64_t get(int size) {
     need(static_cast<std::uint64_t>(size), "a number");
     std::uint64_t v = 0;
-    for (int i = 0; i < size; ++i) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(data_[at_ + i])) << (8 * i);
+    for (int i = 0; i < size; ++i)
+      v |= static_cast<std::uint64_t>(static_cast<unsigned char>(data_[at_ + i])) << (8 * i);
     at_ += static_cast<std::size_t>(size);
     return v;
   }
@@ -86,9 +87,11 @@ class ByteReader {
 
 std::string readWholeFile(const fs::path& path, const char* what) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + std::string(what) + " '" + path.string() + "'");
+  if (!in)
+    throw std::runtime_error("cannot read " + std::string(what) + " '" + path.string() + "'");
   std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw std::runtime_error("failed reading " + std::string(what) + " '" + path.string() + "'");
+  if (in.bad())
+    throw std::runtime_error("failed reading " + std::string(what) + " '" + path.string() + "'");
   return data;
 }
 
@@ -104,7 +107,8 @@ std::string wavelengthList(const std::vector<double>& nm) {
 
 RenderIdentity renderIdentity(const SceneDesc& scene, const std::string& options) {
   RenderIdentity identity;
-  const std::string contents = scene.file.empty() ? std::string() : readWholeFile(scene.file, "scene file");
+  const std::string contents =
+      scene.file.empty() ? std::string() : readWholeFile(scene.file, "scene file");
   identity.sceneContentHash = skin::fnv1a64(contents.data(), contents.size());
   identity.options = options;
   identity.seed = scene.integrator.seed;
@@ -116,20 +120,26 @@ RenderIdentity renderIdentity(const SceneDesc& scene, const std::string& options
   return identity;
 }
 
-std::vector<std::string> identityDifferences(const RenderIdentity& saved, const RenderIdentity& current) {
+std::vector<std::string> identityDifferences(const RenderIdentity& saved,
+                                             const RenderIdentity& current) {
   std::vector<std::string> differences;
-  auto compare = [&](bool same, const std::string& what, const std::string& then, const std::string& now) {
+  auto compare = [&](bool same, const std::string& what, const std::string& then,
+                     const std::string& now) {
     if (!same) differences.push_back(what + ": checkpoint " + then + ", this run " + now);
   };
   compare(saved.sceneContentHash == current.sceneContentHash, "scene file contents",
-          "hash " + skin::hex64(saved.sceneContentHash), "hash " + skin::hex64(current.sceneContentHash));
-  compare(saved.options == current.options, "options", "'" + saved.options + "'", "'" + current.options + "'");
-  compare(saved.seed == current.seed, "seed", std::to_string(saved.seed), std::to_string(current.seed));
+          "hash " + skin::hex64(saved.sceneContentHash),
+          "hash " + skin::hex64(current.sceneContentHash));
+  compare(saved.options == current.options, "options", "'" + saved.options + "'",
+          "'" + current.options + "'");
+  compare(saved.seed == current.seed, "seed", std::to_string(saved.seed),
+          std::to_string(current.seed));
   compare(saved.width == current.width && saved.height == current.height, "resolution",
           std::to_string(saved.width) + "x" + std::to_string(saved.height),
           std::to_string(current.width) + "x" + std::to_string(current.height));
   compare(saved.samplesPerPixelTarget == current.samplesPerPixelTarget, "spp target",
-          std::to_string(saved.samplesPerPixelTarget), std::to_string(current.samplesPerPixelTarget));
+          std::to_string(saved.samplesPerPixelTarget),
+          std::to_string(current.samplesPerPixelTarget));
   compare(saved.channelWavelengthsNm == current.channelWavelengthsNm, "channel wavelengths (nm)",
           wavelengthList(saved.channelWavelengthsNm), wavelengthList(current.channelWavelengthsNm));
   return differences;
@@ -173,15 +183,17 @@ void writeRenderCheckpoint(const fs::path& path, const RenderIdentity& identity,
 RenderCheckpoint readRenderCheckpoint(const fs::path& path) {
   if (!fs::exists(path))
     throw std::runtime_error("no render checkpoint '" + path.string() +
-                             "' to resume from (it is written when a render is interrupted, and removed when one completes)");
+                             "' to resume from (it is written when a render is interrupted, and "
+                             "removed when one completes)");
   const std::string data = readWholeFile(path, "render checkpoint");
   if (data.size() < kMagicSize || data.compare(0, kMagicSize, kMagic, kMagicSize) != 0)
     throw std::runtime_error("'" + path.string() + "' is not a hylios render checkpoint");
   ByteReader in(data, kMagicSize, data.size(), path.string());
   const std::uint32_t version = in.u32();
   if (version != kVersion)
-    throw std::runtime_error("render checkpoint '" + path.string() + "' has format version " + std::to_string(version) +
-                             "; this hylios reads version " + std::to_string(kVersion));
+    throw std::runtime_error("render checkpoint '" + path.string() + "' has format version " +
+                             std::to_string(version) + "; this hylios reads version " +
+                             std::to_string(kVersion));
   if (in.left() < 8) in.fail("it is truncated (no checksum)");
   const std::size_t bodyEnd = data.size() - 8;
   ByteReader checksum(data, bodyEnd, data.size(), path.string());
@@ -202,11 +214,13 @@ RenderCheckpoint readRenderCheckpoint(const fs::path& path) {
   checkpoint.samplesPerPixelDone = static_cast<int>(body.u32());
   const std::uint64_t slots = body.u64();
   if (id.width <= 0 || id.height <= 0 || id.samplesPerPixelTarget <= 0 ||
-      slots != static_cast<std::uint64_t>(id.width) * static_cast<std::uint64_t>(id.height) * channels)
+      slots !=
+          static_cast<std::uint64_t>(id.width) * static_cast<std::uint64_t>(id.height) * channels)
     body.fail("its resolution, channel count and film size disagree");
-  if (checkpoint.samplesPerPixelDone < 0 || checkpoint.samplesPerPixelDone > id.samplesPerPixelTarget)
-    body.fail("it claims " + std::to_string(checkpoint.samplesPerPixelDone) + " samples per pixel of " +
-              std::to_string(id.samplesPerPixelTarget));
+  if (checkpoint.samplesPerPixelDone < 0 ||
+      checkpoint.samplesPerPixelDone > id.samplesPerPixelTarget)
+    body.fail("it claims " + std::to_string(checkpoint.samplesPerPixelDone) +
+              " samples per pixel of " + std::to_string(id.samplesPerPixelTarget));
   if (body.left() != slots * 24) body.fail("its film data has the wrong size");
   auto readSums = [&](std::vector<double>& out) {
     out.reserve(static_cast<std::size_t>(slots));
@@ -227,9 +241,12 @@ RenderCheckpoint readMatchingCheckpoint(const fs::path& path, const RenderIdenti
   RenderCheckpoint checkpoint = readRenderCheckpoint(path);
   const std::vector<std::string> differences = identityDifferences(checkpoint.identity, current);
   if (!differences.empty()) {
-    std::string text = "render checkpoint '" + path.string() + "' belongs to another render; it differs in:";
+    std::string text =
+        "render checkpoint '" + path.string() + "' belongs to another render; it differs in:";
     for (const std::string& d : differences) text += "\n  " + d;
-    text += "\n(resume with the scene file and options of the interrupted run, or render without --resume)";
+    text +=
+        "\n(resume with the scene file and options of the interrupted run, or render without "
+        "--resume)";
     throw std::runtime_error(text);
   }
   return checkpoint;

@@ -26,11 +26,13 @@ namespace hylios {
 
 /// Everything a checkpoint must agree with to be continued.
 struct RenderIdentity {
-  std::uint64_t sceneContentHash = 0;  ///< FNV-1a 64 of the scene file's bytes (files it refers to are not hashed)
-  std::string options;                 ///< the image-affecting command-line options, canonical (app/render_command.cpp)
+  std::uint64_t sceneContentHash =
+      0;  ///< FNV-1a 64 of the scene file's bytes (files it refers to are not hashed)
+  std::string
+      options;  ///< the image-affecting command-line options, canonical (app/render_command.cpp)
   std::uint64_t seed = 0;
   int width = 0, height = 0;
-  int samplesPerPixelTarget = 0;       ///< the channel stratification depends on it
+  int samplesPerPixelTarget = 0;  ///< the channel stratification depends on it
   std::vector<double> channelWavelengthsNm;
 };
 
@@ -40,7 +42,8 @@ RenderIdentity renderIdentity(const SceneDesc& scene, const std::string& options
 
 /// What differs between a checkpoint's identity and this run's, one phrase each (e.g.
 /// "seed: checkpoint 1, this run 2"); empty when they agree.
-std::vector<std::string> identityDifferences(const RenderIdentity& saved, const RenderIdentity& current);
+std::vector<std::string> identityDifferences(const RenderIdentity& saved,
+                                             const RenderIdentity& current);
 
 struct RenderCheckpoint {
   RenderIdentity identity;
@@ -55,13 +58,15 @@ struct RenderCheckpoint {
 std::filesystem::path checkpointPathFor(const std::filesystem::path& exrPath);
 
 /// Writes the film's state atomically (skin/core/atomic_file.h).
-void writeRenderCheckpoint(const std::filesystem::path& path, const RenderIdentity& identity, const Film& film);
+void writeRenderCheckpoint(const std::filesystem::path& path, const RenderIdentity& identity,
+                           const Film& film);
 
 /// Reads a checkpoint; throws std::runtime_error naming the file and what is wrong (missing,
 /// not a checkpoint, another version, truncated, checksum mismatch, inconsistent sizes).
 RenderCheckpoint readRenderCheckpoint(const std::filesystem::path& path);
 
 /// readRenderCheckpoint, then throws std::runtime_error listing every identity difference.
-RenderCheckpoint readMatchingCheckpoint(const std::filesystem::path& path, const RenderIdentity& current);
+RenderCheckpoint readMatchingCheckpoint(const std::filesystem::path& path,
+                                        const RenderIdentity& current);
 
 }  // namespace hylios

@@ -12,10 +12,12 @@ namespace {
 double median(std::vector<double>& values) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
   const std::size_t middle = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle), values.end());
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle),
+                   values.end());
   const double upper = values[middle];
   if (values.size() % 2 == 1) return upper;
-  const double lower = *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle));
+  const double lower =
+      *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle));
   return 0.5 * (lower + upper);
 }
 
@@ -23,13 +25,17 @@ bool seen(const std::vector<bool>& mask, std::size_t pixel) { return mask.empty(
 
 }  // namespace
 
-std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b, const std::vector<bool>& mask) {
-  if (a.width != b.width || a.height != b.height || a.groups != b.groups || a.values.size() != b.values.size())
+std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b,
+                                     const std::vector<bool>& mask) {
+  if (a.width != b.width || a.height != b.height || a.groups != b.groups ||
+      a.values.size() != b.values.size())
     throw std::invalid_argument("noise: the two images differ in size or channels");
   const std::size_t pixels = static_cast<std::size_t>(a.width) * static_cast<std::size_t>(a.height);
   const std::size_t groups = a.groups.size();
-  if (a.values.size() != pixels * groups) throw std::invalid_argument("noise: image values do not match its size");
-  if (!mask.empty() && mask.size() != pixels) throw std::invalid_argument("noise: the mask does not match the image");
+  if (a.values.size() != pixels * groups)
+    throw std::invalid_argument("noise: image values do not match its size");
+  if (!mask.empty() && mask.size() != pixels)
+    throw std::invalid_argument("noise: the mask does not match the image");
   std::vector<GroupNoise> result;
   std::vector<double> relative;
   for (std::size_t g = 0; g < groups; ++g) {

@@ -20,8 +20,8 @@ namespace hylios {
 /// One estimate of an image reduced to what noise is measured on: per pixel, each group's value.
 struct NoiseImage {
   int width = 0, height = 0;
-  std::vector<std::string> groups;     ///< names, e.g. "band visible", "R", "G", "B"
-  std::vector<double> values;          ///< [(y·width + x)·groups + g]
+  std::vector<std::string> groups;  ///< names, e.g. "band visible", "R", "G", "B"
+  std::vector<double> values;       ///< [(y·width + x)·groups + g]
   /// The indices of R, G, B in `groups` when the image has a colour band (chromaticity), else -1.
   std::array<int, 3> rgb{-1, -1, -1};
 };
@@ -35,7 +35,8 @@ struct GroupNoise {
 /// The figures of every group, then "chromaticity" when both images have R, G, B. `mask` has one
 /// entry per pixel (true: the pixel sees an object); empty means every pixel. Throws
 /// std::invalid_argument when the two images differ in size or groups.
-std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b, const std::vector<bool>& mask);
+std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b,
+                                     const std::vector<bool>& mask);
 
 /// The largest of the figures (the noise target is met when it is ≤ the target); NaN groups are
 /// skipped; 0 when there is none.

@@ -2,7 +2,8 @@
 // radiance of a light, or the reflectance spectrum of a diffuse material. Every shape is
 // dimensionless and multiplied by EmissionDesc::scale:
 //   Constant   1 at every wavelength.
-//   D65        the CIE D65 illuminant (renderer/image/colour_tables.h) divided by 100, i.e. 1 at 560 nm;
+//   D65        the CIE D65 illuminant (renderer/image/colour_tables.h) divided by 100, i.e. 1 at
+//   560 nm;
 //              defined only where the D65 table is.
 //   Blackbody  Planck's law at temperatureK divided by its value at the Wien peak
 //              λmax = b/T (the peak over all wavelengths, not only 250–2500 nm), so ≤ 1 everywhere.

@@ -1,10 +1,12 @@
-// A parsed, validated scene: what the scene file (renderer/scene/scene_file.h) says, in plain structs.
-// Every element keeps the file position it came from, so later errors (a missing mesh, a
+// A parsed, validated scene: what the scene file (renderer/scene/scene_file.h) says, in plain
+// structs. Every element keeps the file position it came from, so later errors (a missing mesh, a
 // malformed OBJ, a bad texture) still name file:line:col.
 //
 // Units: scene lengths are in scene units; `unitCm` says how many centimetres one unit is (the
 // head mesh is about 5 cm per unit). Wavelengths in nm. Radiance in W·m⁻²·sr⁻¹·nm⁻¹ (relative).
 #pragma once
+#include <glm/glm.hpp>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -12,13 +14,11 @@
 #include <string>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 #include "skin/core/source_location.h"
 #include "skin/effect_plan.h"
 #include "skin/estimator.h"
-#include "skin/specimen.h"
 #include "skin/skin_mode.h"
+#include "skin/specimen.h"
 
 namespace hylios {
 
@@ -38,8 +38,8 @@ struct CameraDesc {
   glm::dvec3 lookAt{0, 0, 0};
   glm::dvec3 up{0, 1, 0};
   double verticalFovDeg = 40;
-  double apertureRadius = 0;   ///< thin lens; 0 = pinhole
-  double focusDistance = 0;    ///< 0 = distance to lookAt
+  double apertureRadius = 0;  ///< thin lens; 0 = pinhole
+  double focusDistance = 0;   ///< 0 = distance to lookAt
   SourceLocation where;
 };
 
@@ -49,7 +49,7 @@ struct BandDesc {
   std::string name;
   double minNm = 0;
   double maxNm = 0;
-  double stepNm = 0;           ///< range bands only
+  double stepNm = 0;  ///< range bands only
   /// Fixed pseudo-colour scale for single-wavelength previews (so a series compares).
   double previewMin = 0;
   double previewMax = 1;
@@ -64,17 +64,17 @@ struct FilmDesc {
   int height = 256;
   int samplesPerPixel = 16;
   std::vector<BandDesc> bands;
-  double exposure = 1.0;       ///< scale applied before the sRGB transfer of the visible preview
+  double exposure = 1.0;  ///< scale applied before the sRGB transfer of the visible preview
   SourceLocation where;
 };
 
 /// An emission spectrum (relative spectral radiance), evaluated per wavelength.
 struct EmissionDesc {
   enum class Kind { Constant, D65, Blackbody, Led, Tabulated } kind = Kind::Constant;
-  double scale = 1;            ///< multiplies the shape
-  double temperatureK = 0;     ///< Blackbody (normalised to 1 at its peak)
-  double centreNm = 0;         ///< Led: Gaussian centre
-  double fwhmNm = 0;           ///< Led: full width at half maximum
+  double scale = 1;                                   ///< multiplies the shape
+  double temperatureK = 0;                            ///< Blackbody (normalised to 1 at its peak)
+  double centreNm = 0;                                ///< Led: Gaussian centre
+  double fwhmNm = 0;                                  ///< Led: full width at half maximum
   std::vector<double> tableWavelengthNm, tableValue;  ///< Tabulated (file or inline)
   SourceLocation where;
 };
@@ -86,7 +86,7 @@ struct LightDesc {
   glm::dvec3 direction{0, 0, -1};  ///< Spot: axis
   double spotInnerDeg = 0;
   double spotOuterDeg = 0;
-  std::string shape;               ///< Area: name of the emitting shape
+  std::string shape;  ///< Area: name of the emitting shape
   SourceLocation where;
 };
 
@@ -94,48 +94,51 @@ struct LightDesc {
 struct SkinMaterialDesc {
   std::string specimen = "S1";
   std::vector<skin::SpecimenOverride> overrides;
-  std::filesystem::path melaninMap;    ///< optional greyscale texture in UV space: multiplier of melanin
-  double melaninMapMin = 1;            ///< multiplier where the map is black
-  double melaninMapMax = 1;            ///< multiplier where the map is white
+  std::filesystem::path
+      melaninMap;            ///< optional greyscale texture in UV space: multiplier of melanin
+  double melaninMapMin = 1;  ///< multiplier where the map is black
+  double melaninMapMax = 1;  ///< multiplier where the map is white
   struct Freckles {
-    double densityPerCm2 = 0;          ///< 0 = none
+    double densityPerCm2 = 0;  ///< 0 = none
     double radiusCm = 0.15;
-    double melaninGain = 3;            ///< melanin multiplier at a freckle's centre
+    double melaninGain = 3;  ///< melanin multiplier at a freckle's centre
     std::uint64_t seed = 1;
   } freckles;
-  double waterReduction = 0;           ///< extra fraction in [0, 1], on top of the specimen's
+  double waterReduction = 0;  ///< extra fraction in [0, 1], on top of the specimen's
 };
 
 struct MaterialDesc {
   enum class Kind { Skin, Diffuse, Dielectric } kind = Kind::Diffuse;
   std::string name;
   SkinMaterialDesc skin;
-  EmissionDesc reflectance;            ///< Diffuse: reflectance spectrum in [0, 1]
-  double refractiveIndex = 1.5;        ///< Dielectric
-  double roughness = 0;                ///< Dielectric: 0 = smooth
+  EmissionDesc reflectance;      ///< Diffuse: reflectance spectrum in [0, 1]
+  double refractiveIndex = 1.5;  ///< Dielectric
+  double roughness = 0;          ///< Dielectric: 0 = smooth
   SourceLocation where;
 };
 
 struct ShapeDesc {
   enum class Kind { Mesh, Sphere, Plane } kind = Kind::Sphere;
   std::string name;
-  std::filesystem::path meshPath;      ///< Mesh: OBJ, resolved against the scene file's folder
-  glm::dmat4 transform{1.0};           ///< object to world (translate · rotate · scale)
+  std::filesystem::path meshPath;  ///< Mesh: OBJ, resolved against the scene file's folder
+  glm::dmat4 transform{1.0};       ///< object to world (translate · rotate · scale)
   bool smoothNormals = true;
-  glm::dvec3 centre{0};                ///< Sphere
-  double radius = 1;                   ///< Sphere
-  glm::dvec3 planePoint{0};            ///< Plane (a square of side planeSize)
+  glm::dvec3 centre{0};      ///< Sphere
+  double radius = 1;         ///< Sphere
+  glm::dvec3 planePoint{0};  ///< Plane (a square of side planeSize)
   glm::dvec3 planeNormal{0, 1, 0};
   double planeSize = 10;
-  std::string material;                ///< name of a MaterialDesc
+  std::string material;  ///< name of a MaterialDesc
   SourceLocation where;
 };
 
 struct IntegratorDesc {
   int maxDepth = 8;
   std::uint64_t seed = 1;
-  skin::SkinMode skinMode = skin::SkinMode::Walk;  ///< exact walk at every hit, or exit tables (issue 5)
-  double effectTolerance = skin::kDefaultEffectTolerance;  ///< ε of the effect planner (skin/effect_plan.h)
+  skin::SkinMode skinMode =
+      skin::SkinMode::Walk;  ///< exact walk at every hit, or exit tables (issue 5)
+  double effectTolerance =
+      skin::kDefaultEffectTolerance;  ///< ε of the effect planner (skin/effect_plan.h)
   /// spectral: a camera path carries every channel of a band (hero wavelengths) and skin hits run
   /// the spectral walk; per-wavelength: one channel per path and the analog walk (the reference).
   skin::Estimator estimator = skin::Estimator::Spectral;
@@ -146,8 +149,8 @@ struct IntegratorDesc {
 };
 
 struct SceneDesc {
-  std::filesystem::path file;          ///< the scene file (relative paths resolve against its folder)
-  double unitCm = 1;                   ///< centimetres per scene unit
+  std::filesystem::path file;  ///< the scene file (relative paths resolve against its folder)
+  double unitCm = 1;           ///< centimetres per scene unit
   CameraDesc camera;
   FilmDesc film;
   std::vector<LightDesc> lights;

@@ -1,15 +1,16 @@
 // Scene files: the TOML layout documented in docs/scene-format.md, read table by table with
-// TomlTableReader (renderer/scene/toml_table_reader.h), then cross-checked (names, spectra × bands).
+// TomlTableReader (renderer/scene/toml_table_reader.h), then cross-checked (names, spectra ×
+// bands).
 #include "renderer/scene/scene_file.h"
 
 #include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <toml++/toml.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <glm/gtc/matrix_transform.hpp>
 #include <map>
 #include <sstream>
 
@@ -25,12 +26,19 @@ const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
       {"camera", {"position", "look_at", "up", "fov_deg", "aperture_radius", "focus_distance"}},
       {"film", {"resolution", "spp", "exposure", "band"}},
       {"film.band", {"name", "wavelength_nm", "preview_range", "range_nm", "step_nm"}},
-      {"integrator", {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target"}},
-      {"light", {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg", "shape"}},
-      {"material", {"name", "type", "specimen", "overrides", "freckles", "melanin_map", "water_reduction_percent", "reflectance", "refractive_index", "roughness"}},
+      {"integrator",
+       {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target"}},
+      {"light",
+       {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg",
+        "shape"}},
+      {"material",
+       {"name", "type", "specimen", "overrides", "freckles", "melanin_map",
+        "water_reduction_percent", "reflectance", "refractive_index", "roughness"}},
       {"material.freckles", {"density_per_cm2", "radius_cm", "melanin_gain", "seed"}},
       {"material.melanin_map", {"file", "min_multiplier", "max_multiplier"}},
-      {"shape", {"name", "type", "material", "file", "smooth_normals", "transform", "centre", "radius", "point", "normal", "size"}},
+      {"shape",
+       {"name", "type", "material", "file", "smooth_normals", "transform", "centre", "radius",
+        "point", "normal", "size"}},
       {"shape.transform", {"translate", "rotate_deg", "scale"}},
       {"top level", {"unit_cm", "camera", "film", "light", "material", "shape", "integrator"}},
   };
@@ -96,8 +104,7 @@ SourceLocation nameLocation(const toml::table& t, const TomlSource& src) {
 // ---- camera, film, integrator ---------------------------------------------------------------
 
 CameraDesc readCamera(const toml::table& t, const TomlSource& src) {
-  Reader r(t, "[camera]", src,
-           sceneFileKeys().at("camera"));
+  Reader r(t, "[camera]", src, sceneFileKeys().at("camera"));
   CameraDesc c;
   c.where = r.where();
   c.position = r.vec3("position");
@@ -124,8 +131,7 @@ bool isChannelName(const std::string& name) {
 }
 
 BandDesc readBand(const toml::table& t, int index, const TomlSource& src) {
-  Reader r(t, fmt::format("[[film.band]] #{}", index), src,
-           sceneFileKeys().at("film.band"));
+  Reader r(t, fmt::format("[[film.band]] #{}", index), src, sceneFileKeys().at("film.band"));
   BandDesc b;
   b.where = r.where();
   b.name = r.string("name");
@@ -174,11 +180,12 @@ void checkDistinctChannels(const FilmDesc& film) {
       const auto [it, inserted] = seen.emplace(key, std::make_pair(b, nm));
       if (inserted) continue;
       const BandDesc& first = film.bands[it->second.first];
-      throw SceneError(film.bands[b].where,
-                       fmt::format("band '{}' has a channel at {} nm and band '{}' (at {}) one at {} nm: the "
-                                   "spectral channels would share one name (wavelengths are kept to 1e-6 nm); "
-                                   "give each channel its own wavelength",
-                                   film.bands[b].name, nm, first.name, first.where.str(), it->second.second));
+      throw SceneError(
+          film.bands[b].where,
+          fmt::format("band '{}' has a channel at {} nm and band '{}' (at {}) one at {} nm: the "
+                      "spectral channels would share one name (wavelengths are kept to 1e-6 nm); "
+                      "give each channel its own wavelength",
+                      film.bands[b].name, nm, first.name, first.where.str(), it->second.second));
     }
   }
 }
@@ -226,11 +233,14 @@ IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
   d.seed =
       static_cast<std::uint64_t>(r.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
   if (r.has("skin_mode"))
-    d.skinMode = *findEnum(r.choice("skin_mode", enumNameList(skin::kSkinModeNames)), skin::kSkinModeNames);
-  d.effectTolerance = r.number("effect_tolerance", NumberRange::closed(0.0, 1.0), d.effectTolerance);
+    d.skinMode =
+        *findEnum(r.choice("skin_mode", enumNameList(skin::kSkinModeNames)), skin::kSkinModeNames);
+  d.effectTolerance =
+      r.number("effect_tolerance", NumberRange::closed(0.0, 1.0), d.effectTolerance);
   if (r.has("estimator"))
     d.estimator = *skin::parseEstimator(r.choice("estimator", {"spectral", "per-wavelength"}));
-  if (r.has("noise_target")) d.noiseTarget = r.number("noise_target", NumberRange::closed(1e-6, 10.0));
+  if (r.has("noise_target"))
+    d.noiseTarget = r.number("noise_target", NumberRange::closed(1e-6, 10.0));
   r.finish("[integrator]");
   return d;
 }
@@ -239,9 +249,7 @@ IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
 
 LightDesc readLight(const toml::table& t, int index, const TomlSource& src,
                     const NameRegistry& shapes) {
-  Reader r(
-      t, fmt::format("[[light]] #{}", index), src,
-      sceneFileKeys().at("light"));
+  Reader r(t, fmt::format("[[light]] #{}", index), src, sceneFileKeys().at("light"));
   LightDesc l;
   l.where = r.where();
   const std::string type = r.choice("type", {"point", "spot", "area", "environment"});
@@ -342,8 +350,7 @@ SkinMaterialDesc readSkin(Reader& r) {
   });
   for (const auto& o : overrides) skin.overrides.push_back(o.value);
   if (const toml::table* t = r.table("freckles")) {
-    Reader f(*t, r.label() + " freckles", r.source(),
-             sceneFileKeys().at("material.freckles"));
+    Reader f(*t, r.label() + " freckles", r.source(), sceneFileKeys().at("material.freckles"));
     // Bounded (issue 13): a density of 1e300 per cm² would make the freckle field without end.
     skin.freckles.densityPerCm2 = f.number("density_per_cm2", NumberRange::closed(0, 1e4));
     skin.freckles.radiusCm = f.number("radius_cm", NumberRange::closed(1e-4, 10), 0.15);
@@ -366,8 +373,7 @@ SkinMaterialDesc readSkin(Reader& r) {
 }
 
 MaterialDesc readMaterial(const toml::table& t, int index, const TomlSource& src) {
-  Reader r(t, fmt::format("[[material]] #{}", index), src,
-           sceneFileKeys().at("material"));
+  Reader r(t, fmt::format("[[material]] #{}", index), src, sceneFileKeys().at("material"));
   MaterialDesc m;
   m.where = r.where();
   m.name = r.string("name");
@@ -415,8 +421,7 @@ glm::dmat4 readTransform(const toml::table& t, const std::string& label, const T
 
 ShapeDesc readShape(const toml::table& t, int index, const TomlSource& src,
                     const NameRegistry& materials) {
-  Reader r(t, fmt::format("[[shape]] #{}", index), src,
-           sceneFileKeys().at("shape"));
+  Reader r(t, fmt::format("[[shape]] #{}", index), src, sceneFileKeys().at("shape"));
   ShapeDesc s;
   s.where = r.where();
   s.name = r.string("name", "");
@@ -481,8 +486,7 @@ std::vector<LightDesc> readLights(Reader& root, const TomlSource& src, const Nam
 }
 
 SceneDesc parseRoot(const toml::table& rootTable, const TomlSource& src) {
-  Reader root(rootTable, "the top level", src,
-              sceneFileKeys().at("top level"));
+  Reader root(rootTable, "the top level", src, sceneFileKeys().at("top level"));
   SceneDesc scene;
   scene.unitCm = root.number("unit_cm", NumberRange::closed(kMinUnitCm, kMaxUnitCm), 1.0);
   scene.camera = readCamera(requiredTable(root, "camera"), src);
@@ -517,7 +521,8 @@ SceneDesc parseSceneText(const std::string& tomlText, const std::string& sourceN
   try {
     root = toml::parse(tomlText, sourceName);
   } catch (const toml::parse_error& error) {
-    throw SceneError(skin::tomlSourceLocation(sourceName, error.source()), std::string(error.description()));
+    throw SceneError(skin::tomlSourceLocation(sourceName, error.source()),
+                     std::string(error.description()));
   }
   SceneDesc scene = parseRoot(root, {sourceName, baseDir});
   scene.file = sourceName;

@@ -49,8 +49,8 @@ void readTableFile(Reader& r, EmissionDesc& e) {
   e.tableValue = table.column(column);
   for (std::size_t i = 0; i < e.tableValue.size(); ++i)
     if (!(e.tableValue[i] >= 0 && e.tableValue[i] <= kMaxSpectrumValue))
-      throw SceneError(where, fmt::format("'{}': value {} at {} nm must be in [0, 1e12]", file.string(),
-                                          e.tableValue[i], e.tableWavelengthNm[i]));
+      throw SceneError(where, fmt::format("'{}': value {} at {} nm must be in [0, 1e12]",
+                                          file.string(), e.tableValue[i], e.tableWavelengthNm[i]));
 }
 
 void readTabulated(Reader& r, EmissionDesc& e) {

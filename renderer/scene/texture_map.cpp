@@ -8,7 +8,8 @@ namespace hylios {
 
 TextureMap::TextureMap(const std::filesystem::path& path, const SourceLocation& where) {
   auto input = OIIO::ImageInput::open(path.string());
-  if (!input) throw SceneError(where, "cannot read texture '" + path.string() + "': " + OIIO::geterror());
+  if (!input)
+    throw SceneError(where, "cannot read texture '" + path.string() + "': " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
   width_ = spec.width;
   height_ = spec.height;
@@ -24,7 +25,8 @@ TextureMap::TextureMap(const std::filesystem::path& path, const SourceLocation& 
     float sum = 0;
     for (int c = 0; c < used; ++c) sum += pixels[i * channels + c];
     values_[i] = sum / static_cast<float>(used);
-    if (!std::isfinite(values_[i])) throw SceneError(where, "texture '" + path.string() + "' holds a non-finite value");
+    if (!std::isfinite(values_[i]))
+      throw SceneError(where, "texture '" + path.string() + "' holds a non-finite value");
   }
 }
 
@@ -45,8 +47,8 @@ double TextureMap::lookup(const glm::dvec2& uv) const {
   const double fx = std::floor(x), fy = std::floor(y);
   const double tx = x - fx, ty = y - fy;
   const long ix = static_cast<long>(fx), iy = static_cast<long>(fy);
-  return (1 - tx) * (1 - ty) * texel(ix, iy) + tx * (1 - ty) * texel(ix + 1, iy) + (1 - tx) * ty * texel(ix, iy + 1) +
-         tx * ty * texel(ix + 1, iy + 1);
+  return (1 - tx) * (1 - ty) * texel(ix, iy) + tx * (1 - ty) * texel(ix + 1, iy) +
+         (1 - tx) * ty * texel(ix, iy + 1) + tx * ty * texel(ix + 1, iy + 1);
 }
 
 }  // namespace hylios

@@ -3,10 +3,10 @@
 // to [0, 1] (8-bit 255 → 1), with no colour-space conversion; colour images use the mean of their
 // first three channels. Texture space: u to the right, v = 0 at the bottom row (OBJ convention).
 #pragma once
+#include <glm/glm.hpp>
+
 #include <filesystem>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "renderer/scene/scene.h"
 

@@ -172,9 +172,11 @@ std::filesystem::path TomlTableReader::existingFile(const std::string& key) {
     fail(*table_.get(key),
          fmt::format("'{}': file '{}' does not exist (looked for '{}')", key, text, path.string()));
   if (std::filesystem::is_directory(status))
-    fail(*table_.get(key), fmt::format("'{}': '{}' is a folder, not a file ('{}')", key, text, path.string()));
+    fail(*table_.get(key),
+         fmt::format("'{}': '{}' is a folder, not a file ('{}')", key, text, path.string()));
   if (!std::filesystem::is_regular_file(status))
-    fail(*table_.get(key), fmt::format("'{}': '{}' is not a regular file ('{}')", key, text, path.string()));
+    fail(*table_.get(key),
+         fmt::format("'{}': '{}' is not a regular file ('{}')", key, text, path.string()));
   return path;
 }
 

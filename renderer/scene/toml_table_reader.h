@@ -6,11 +6,11 @@
 // with the keys there are) is refused as soon as the reader is made; one that another variant
 // uses but this one does not ("radius" on a mesh) is refused by finish().
 #pragma once
+#include <glm/glm.hpp>
 #include <toml++/toml.h>
 
 #include <cstdint>
 #include <filesystem>
-#include <glm/glm.hpp>
 #include <limits>
 #include <optional>
 #include <set>
@@ -42,7 +42,9 @@ struct NumberRange {
 /// range (|x| < 1.8e18) and its relative precision.
 constexpr double kMaxSceneCoordinate = 1e7;
 /// [-kMaxSceneCoordinate, kMaxSceneCoordinate].
-inline NumberRange sceneCoordinateRange() { return NumberRange::closed(-kMaxSceneCoordinate, kMaxSceneCoordinate); }
+inline NumberRange sceneCoordinateRange() {
+  return NumberRange::closed(-kMaxSceneCoordinate, kMaxSceneCoordinate);
+}
 /// (0, kMaxSceneCoordinate].
 inline NumberRange sceneSizeRange() { return {0, kMaxSceneCoordinate, true, false}; }
 /// [0, kMaxSceneCoordinate].

@@ -5,22 +5,22 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <tuple>
-
 #include <tiny_obj_loader.h>
+#include <tuple>
 
 namespace hylios {
 namespace {
 
 /// Materials come from the scene file, so mtllib files are not read.
 struct IgnoreMaterials : tinyobj::MaterialReader {
-  bool operator()(const std::string&, std::vector<tinyobj::material_t>*, std::map<std::string, int>*,
-                  std::string*, std::string*) override {
+  bool operator()(const std::string&, std::vector<tinyobj::material_t>*,
+                  std::map<std::string, int>*, std::string*, std::string*) override {
     return true;
   }
 };
 
-[[noreturn]] void fail(const SourceLocation& where, const std::string& source, const std::string& what) {
+[[noreturn]] void fail(const SourceLocation& where, const std::string& source,
+                       const std::string& what) {
   throw SceneError(where, "mesh '" + source + "': " + what);
 }
 
@@ -40,12 +40,14 @@ void checkNumbers(const std::string& text, const std::string& source, const Sour
       char* end = nullptr;
       const double value = std::strtod(word.c_str(), &end);
       if (end == word.c_str() || *end != '\0' || !std::isfinite(value))
-        fail(where, source, "line " + std::to_string(lineNumber) + ": '" + keyword + "' value '" + word +
-                                "' is not a finite number");
+        fail(where, source,
+             "line " + std::to_string(lineNumber) + ": '" + keyword + "' value '" + word +
+                 "' is not a finite number");
     }
     if (count < needed)
-      fail(where, source, "line " + std::to_string(lineNumber) + ": '" + keyword + "' needs " +
-                              std::to_string(needed) + " numbers, found " + std::to_string(count));
+      fail(where, source,
+           "line " + std::to_string(lineNumber) + ": '" + keyword + "' needs " +
+               std::to_string(needed) + " numbers, found " + std::to_string(count));
   }
 }
 
@@ -82,8 +84,8 @@ void computeNormals(TriangleMesh& mesh) {
 
 }  // namespace
 
-TriangleMesh parseObjMesh(const std::string& objText, const std::string& source, const SourceLocation& where,
-                          bool smoothNormals) {
+TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
+                          const SourceLocation& where, bool smoothNormals) {
   checkNumbers(objText, source, where);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
@@ -91,7 +93,8 @@ TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
   std::string warnings, errors;
   IgnoreMaterials ignore;
   std::istringstream in(objText);
-  const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warnings, &errors, &in, &ignore, true);
+  const bool ok =
+      tinyobj::LoadObj(&attrib, &shapes, &materials, &warnings, &errors, &in, &ignore, true);
   if (!ok || !errors.empty()) fail(where, source, "cannot parse: " + errors);
   if (const std::string w = relevantWarnings(warnings); !w.empty()) fail(where, source, w);
 
@@ -103,14 +106,17 @@ TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
   for (const auto& shape : shapes) {
     for (const auto& idx : shape.mesh.indices) {
       if (idx.vertex_index < 0 || idx.vertex_index >= nv)
-        fail(where, source, "triangle " + std::to_string(faceCount / 3 + 1) + " refers to vertex " +
-                                std::to_string(idx.vertex_index + 1) + " of " + std::to_string(nv));
+        fail(where, source,
+             "triangle " + std::to_string(faceCount / 3 + 1) + " refers to vertex " +
+                 std::to_string(idx.vertex_index + 1) + " of " + std::to_string(nv));
       if (idx.normal_index >= nn || idx.normal_index < -1)
-        fail(where, source, "triangle " + std::to_string(faceCount / 3 + 1) + " refers to normal " +
-                                std::to_string(idx.normal_index + 1) + " of " + std::to_string(nn));
+        fail(where, source,
+             "triangle " + std::to_string(faceCount / 3 + 1) + " refers to normal " +
+                 std::to_string(idx.normal_index + 1) + " of " + std::to_string(nn));
       if (idx.texcoord_index >= nt || idx.texcoord_index < -1)
-        fail(where, source, "triangle " + std::to_string(faceCount / 3 + 1) + " refers to texture coordinate " +
-                                std::to_string(idx.texcoord_index + 1) + " of " + std::to_string(nt));
+        fail(where, source,
+             "triangle " + std::to_string(faceCount / 3 + 1) + " refers to texture coordinate " +
+                 std::to_string(idx.texcoord_index + 1) + " of " + std::to_string(nt));
       allNormals = allNormals && idx.normal_index >= 0;
       allUvs = allUvs && idx.texcoord_index >= 0;
       ++faceCount;
@@ -122,7 +128,8 @@ TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
   // One renderer vertex per distinct (position, normal, uv) corner; flat shading splits per face.
   std::map<std::tuple<int, int, int, std::size_t>, std::uint32_t> vertexOf;
   auto position = [&](int i) {
-    return glm::dvec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+    return glm::dvec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
+                      attrib.vertices[3 * i + 2]);
   };
   std::size_t triangleIndex = 0;
   for (const auto& shape : shapes) {
@@ -131,7 +138,8 @@ TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
       const tinyobj::index_t c[3] = {indices[f], indices[f + 1], indices[f + 2]};
       if (c[0].vertex_index == c[1].vertex_index || c[1].vertex_index == c[2].vertex_index ||
           c[0].vertex_index == c[2].vertex_index ||
-          isDegenerate(position(c[0].vertex_index), position(c[1].vertex_index), position(c[2].vertex_index))) {
+          isDegenerate(position(c[0].vertex_index), position(c[1].vertex_index),
+                       position(c[2].vertex_index))) {
         ++mesh.skippedDegenerate;
         continue;
       }
@@ -140,12 +148,14 @@ TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
         const auto key = std::make_tuple(c[k].vertex_index, useObjNormals ? c[k].normal_index : -1,
                                          allUvs ? c[k].texcoord_index : -1,
                                          smoothNormals ? std::size_t{0} : triangleIndex + 1);
-        auto [it, inserted] = vertexOf.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+        auto [it, inserted] =
+            vertexOf.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
         if (inserted) {
           mesh.positions.push_back(position(c[k].vertex_index));
           if (useObjNormals) {
             const int n = c[k].normal_index;
-            mesh.normals.emplace_back(attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]);
+            mesh.normals.emplace_back(attrib.normals[3 * n], attrib.normals[3 * n + 1],
+                                      attrib.normals[3 * n + 2]);
           }
           if (allUvs) {
             const int t = c[k].texcoord_index;
@@ -158,20 +168,24 @@ TriangleMesh parseObjMesh(const std::string& objText, const std::string& source,
     }
   }
   if (mesh.triangles.empty())
-    fail(where, source, faceCount == 0 ? "has no triangles"
-                                       : "has no usable triangle (all " + std::to_string(mesh.skippedDegenerate) +
-                                             " are degenerate)");
+    fail(where, source,
+         faceCount == 0 ? "has no triangles"
+                        : "has no usable triangle (all " + std::to_string(mesh.skippedDegenerate) +
+                              " are degenerate)");
   bool normalsUsable = useObjNormals;
   for (auto& n : mesh.normals) {
     const double len = glm::length(n);
-    if (!(len > 0)) normalsUsable = false;
-    else n /= len;
+    if (!(len > 0))
+      normalsUsable = false;
+    else
+      n /= len;
   }
   if (!normalsUsable) computeNormals(mesh);
   return mesh;
 }
 
-TriangleMesh loadObjMesh(const std::filesystem::path& path, const SourceLocation& where, bool smoothNormals) {
+TriangleMesh loadObjMesh(const std::filesystem::path& path, const SourceLocation& where,
+                         bool smoothNormals) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(where, "cannot open mesh file '" + path.string() + "'");
   std::ostringstream text;
@@ -186,14 +200,16 @@ TriangleMesh makePlaneMesh(const glm::dvec3& point, const glm::dvec3& normal, do
   const glm::dvec3 b = glm::cross(n, t);  // (t, b, n) right-handed: counter-clockwise seen from +n
   const double h = 0.5 * size;
   TriangleMesh mesh;
-  mesh.positions = {point - t * h - b * h, point + t * h - b * h, point + t * h + b * h, point - t * h + b * h};
+  mesh.positions = {point - t * h - b * h, point + t * h - b * h, point + t * h + b * h,
+                    point - t * h + b * h};
   mesh.normals.assign(4, n);
   mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
   return mesh;
 }
 
-void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld, const SourceLocation& where) {
+void transformMesh(TriangleMesh& mesh, const glm::dmat4& objectToWorld,
+                   const SourceLocation& where) {
   const glm::dmat3 linear(objectToWorld);
   const double det = glm::determinant(linear);
   if (!(std::fabs(det) > 1e-300) || !std::isfinite(det))

@@ -1,7 +1,8 @@
 #include "renderer/tracing/camera.h"
-#include "skin/core/constants.h"
 
 #include <cmath>
+
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
@@ -25,7 +26,8 @@ glm::dvec2 concentricDisk(double u, double v) {
 Camera::Camera(const CameraDesc& desc, int widthPixels, int heightPixels)
     : position_(desc.position), width_(widthPixels), height_(heightPixels) {
   const glm::dvec3 view = desc.lookAt - desc.position;
-  if (!(glm::length(view) > 0)) throw SceneError(desc.where, "camera position and look_at coincide");
+  if (!(glm::length(view) > 0))
+    throw SceneError(desc.where, "camera position and look_at coincide");
   forward_ = glm::normalize(view);
   const glm::dvec3 side = glm::cross(forward_, desc.up);
   if (!(glm::length(side) > 1e-12 * glm::length(desc.up)))
@@ -34,8 +36,10 @@ Camera::Camera(const CameraDesc& desc, int widthPixels, int heightPixels)
   up_ = glm::cross(right_, forward_);
   if (!(desc.verticalFovDeg > 0 && desc.verticalFovDeg < 180))
     throw SceneError(desc.where, "camera fov_deg must lie in (0, 180)");
-  if (widthPixels <= 0 || heightPixels <= 0) throw SceneError(desc.where, "film resolution must be positive");
-  if (!(desc.apertureRadius >= 0)) throw SceneError(desc.where, "camera aperture radius must be >= 0");
+  if (widthPixels <= 0 || heightPixels <= 0)
+    throw SceneError(desc.where, "film resolution must be positive");
+  if (!(desc.apertureRadius >= 0))
+    throw SceneError(desc.where, "camera aperture radius must be >= 0");
   tanHalfFov_ = std::tan(0.5 * desc.verticalFovDeg * kPi / 180);
   aspect_ = static_cast<double>(widthPixels) / heightPixels;
   apertureRadius_ = desc.apertureRadius;

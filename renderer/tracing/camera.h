@@ -4,8 +4,8 @@
 #pragma once
 #include <glm/glm.hpp>
 
-#include "renderer/tracing/embree_scene.h"
 #include "renderer/scene/scene.h"
+#include "renderer/tracing/embree_scene.h"
 
 namespace hylios {
 
@@ -16,7 +16,8 @@ class Camera {
   Camera(const CameraDesc& desc, int widthPixels, int heightPixels);
 
   /// The primary ray through image point (x, y) in pixels (fractional: pixel (i, j) spans
-  /// [i, i+1) × [j, j+1)); (lensU, lensV) in [0, 1)² pick the point on the lens (ignored by a pinhole).
+  /// [i, i+1) × [j, j+1)); (lensU, lensV) in [0, 1)² pick the point on the lens (ignored by a
+  /// pinhole).
   Ray generateRay(double x, double y, double lensU, double lensV) const;
 
   const glm::dvec3& forward() const { return forward_; }

@@ -1,5 +1,6 @@
 #include "renderer/tracing/embree_scene.h"
-#include "skin/core/constants.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +8,11 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include <fmt/format.h>
-
 #include "renderer/scene/toml_table_reader.h"
+#include "skin/core/constants.h"
 
 namespace hylios {
 namespace {
-
 
 void fatalEmbreeError(void*, RTCError code, const char* message) {
   std::fprintf(stderr, "hylios: fatal Embree error %d: %s\n", static_cast<int>(code),
@@ -23,7 +22,8 @@ void fatalEmbreeError(void*, RTCError code, const char* message) {
 }
 
 /// Both roots of |o + t d − c|² = r² (t0 ≤ t1); false when the line misses the sphere.
-bool sphereRoots(const glm::dvec3& o, const glm::dvec3& d, const EmbreeScene::Sphere& s, double& t0, double& t1) {
+bool sphereRoots(const glm::dvec3& o, const glm::dvec3& d, const EmbreeScene::Sphere& s, double& t0,
+                 double& t1) {
   const glm::dvec3 oc = o - s.centre;
   const double a = glm::dot(d, d);
   const double b = glm::dot(oc, d);
@@ -72,8 +72,10 @@ void sphereIntersect(const RTCIntersectFunctionNArguments* args) {
     if (args->valid[i] != -1) continue;
     const double t = nearestSphereRoot(*s, ray, args->N, i);
     if (t < 0) continue;
-    const glm::dvec3 o(RTCRayN_org_x(ray, args->N, i), RTCRayN_org_y(ray, args->N, i), RTCRayN_org_z(ray, args->N, i));
-    const glm::dvec3 d(RTCRayN_dir_x(ray, args->N, i), RTCRayN_dir_y(ray, args->N, i), RTCRayN_dir_z(ray, args->N, i));
+    const glm::dvec3 o(RTCRayN_org_x(ray, args->N, i), RTCRayN_org_y(ray, args->N, i),
+                       RTCRayN_org_z(ray, args->N, i));
+    const glm::dvec3 d(RTCRayN_dir_x(ray, args->N, i), RTCRayN_dir_y(ray, args->N, i),
+                       RTCRayN_dir_z(ray, args->N, i));
     const glm::dvec3 n = (o + d * t - s->centre) / s->radius;
     RTCRayN_tfar(ray, args->N, i) = static_cast<float>(t);
     RTCHitN_Ng_x(hit, args->N, i) = static_cast<float>(n.x);
@@ -104,18 +106,20 @@ constexpr double kMaxRayCoordinate = 1e17;
 
 bool rayInRange(const Ray& ray) {
   for (int k = 0; k < 3; ++k)
-    if (!(std::fabs(ray.origin[k]) <= kMaxRayCoordinate) || !(std::fabs(ray.direction[k]) <= kMaxRayCoordinate))
+    if (!(std::fabs(ray.origin[k]) <= kMaxRayCoordinate) ||
+        !(std::fabs(ray.direction[k]) <= kMaxRayCoordinate))
       return false;
   return !std::isnan(ray.tMax);
 }
 
 void setRay(RTCRay& r, const Ray& ray) {
   if (!rayInRange(ray))
-    throw std::runtime_error(fmt::format("a ray left the range the tracer can represent (origin ({}, {}, {}), "
-                                         "direction ({}, {}, {})); keep the scene within the limits of "
-                                         "docs/scene-format.md",
-                                         ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
-                                         ray.direction.z));
+    throw std::runtime_error(
+        fmt::format("a ray left the range the tracer can represent (origin ({}, {}, {}), "
+                    "direction ({}, {}, {})); keep the scene within the limits of "
+                    "docs/scene-format.md",
+                    ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
+                    ray.direction.z));
   r.org_x = static_cast<float>(ray.origin.x);
   r.org_y = static_cast<float>(ray.origin.y);
   r.org_z = static_cast<float>(ray.origin.z);
@@ -123,7 +127,8 @@ void setRay(RTCRay& r, const Ray& ray) {
   r.dir_y = static_cast<float>(ray.direction.y);
   r.dir_z = static_cast<float>(ray.direction.z);
   r.tnear = 0;
-  r.tfar = std::isfinite(ray.tMax) ? static_cast<float>(ray.tMax) : std::numeric_limits<float>::infinity();
+  r.tfar = std::isfinite(ray.tMax) ? static_cast<float>(ray.tMax)
+                                   : std::numeric_limits<float>::infinity();
   r.mask = 0xFFFFFFFFu;
   r.time = 0;
   r.flags = 0;
@@ -145,13 +150,15 @@ EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
 
 EmbreeScene::Sphere transformedSphere(const ShapeDesc& desc) {
   const glm::dmat3 linear(desc.transform);
-  const double sx = glm::length(linear[0]), sy = glm::length(linear[1]), sz = glm::length(linear[2]);
+  const double sx = glm::length(linear[0]), sy = glm::length(linear[1]),
+               sz = glm::length(linear[2]);
   const double tolerance = 1e-9 * std::max({sx, sy, sz});
   const bool orthogonal = std::fabs(glm::dot(linear[0], linear[1])) <= tolerance * sx &&
                           std::fabs(glm::dot(linear[1], linear[2])) <= tolerance * sy &&
                           std::fabs(glm::dot(linear[0], linear[2])) <= tolerance * sz;
   if (!(sx > 0) || std::fabs(sx - sy) > tolerance || std::fabs(sx - sz) > tolerance || !orthogonal)
-    throw SceneError(desc.where, "a sphere's transform may only rotate, translate and scale uniformly");
+    throw SceneError(desc.where,
+                     "a sphere's transform may only rotate, translate and scale uniformly");
   if (!(desc.radius > 0) || !std::isfinite(desc.radius))
     throw SceneError(desc.where, "sphere radius must be a positive finite number");
   return {glm::dvec3(desc.transform * glm::dvec4(desc.centre, 1.0)), desc.radius * sx};
@@ -186,8 +193,11 @@ void EmbreeScene::addShapes(const SceneDesc& scene) {
       rtcSetGeometryOccludedFunction(geometry, sphereOccluded);
       const glm::dvec3 c = glm::abs(shape->sphere.centre) + shape->sphere.radius;
       if (!(std::max({c.x, c.y, c.z}) <= kMaxDerivedCoordinate))
-        throw SceneError(desc.where, fmt::format("the transformed sphere reaches {:g} scene units from the origin; "
-                                                 "at most {:g}", std::max({c.x, c.y, c.z}), kMaxDerivedCoordinate));
+        throw SceneError(
+            desc.where,
+            fmt::format("the transformed sphere reaches {:g} scene units from the origin; "
+                        "at most {:g}",
+                        std::max({c.x, c.y, c.z}), kMaxDerivedCoordinate));
       extent_ = std::max({extent_, c.x, c.y, c.z});
     } else {
       if (desc.kind == ShapeDesc::Kind::Mesh) {
@@ -202,19 +212,25 @@ void EmbreeScene::addShapes(const SceneDesc& scene) {
       for (const glm::dvec3& p : mesh.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
           throw SceneError(desc.where, "a transformed vertex is not finite");
-        else if (!(std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) <= kMaxDerivedCoordinate))
-          throw SceneError(desc.where, fmt::format("a transformed vertex ({:g}, {:g}, {:g}) lies beyond {:g} scene "
-                                                   "units from the origin", p.x, p.y, p.z, kMaxDerivedCoordinate));
+        else if (!(std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) <=
+                   kMaxDerivedCoordinate))
+          throw SceneError(
+              desc.where,
+              fmt::format("a transformed vertex ({:g}, {:g}, {:g}) lies beyond {:g} scene "
+                          "units from the origin",
+                          p.x, p.y, p.z, kMaxDerivedCoordinate));
       geometry = rtcNewGeometry(device_.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+      auto* vertices = static_cast<float*>(
+          rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                  3 * sizeof(float), mesh.positions.size()));
       for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
         const glm::dvec3& p = mesh.positions[v];
         for (int k = 0; k < 3; ++k) vertices[3 * v + k] = static_cast<float>(p[k]);
         extent_ = std::max({extent_, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
       }
-      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+      auto* indices = static_cast<unsigned*>(
+          rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                  3 * sizeof(unsigned), mesh.triangles.size()));
       double running = 0;
       for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         for (int k = 0; k < 3; ++k) indices[3 * t + k] = mesh.triangles[t][k];
@@ -243,15 +259,17 @@ std::size_t EmbreeScene::skippedDegenerate(std::size_t shape) const {
   return shapes_.at(shape)->isSphere ? 0 : shapes_.at(shape)->mesh.skippedDegenerate;
 }
 
-SurfaceHit EmbreeScene::triangleHit(const Shape& shape, std::size_t shapeIndex, std::size_t primitive, double u,
-                                    double v, const Ray& ray) const {
+SurfaceHit EmbreeScene::triangleHit(const Shape& shape, std::size_t shapeIndex,
+                                    std::size_t primitive, double u, double v,
+                                    const Ray& ray) const {
   const TriangleMesh& mesh = shape.mesh;
   const auto& tri = mesh.triangles[primitive];
   const double w = 1 - u - v;
   SurfaceHit hit;
   hit.shape = shapeIndex;
   hit.primitive = primitive;
-  hit.position = w * mesh.positions[tri[0]] + u * mesh.positions[tri[1]] + v * mesh.positions[tri[2]];
+  hit.position =
+      w * mesh.positions[tri[0]] + u * mesh.positions[tri[1]] + v * mesh.positions[tri[2]];
   hit.t = glm::dot(hit.position - ray.origin, ray.direction);
   hit.geometricNormal = glm::normalize(glm::cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
                                                   mesh.positions[tri[2]] - mesh.positions[tri[0]]));
@@ -266,7 +284,8 @@ SurfaceHit EmbreeScene::triangleHit(const Shape& shape, std::size_t shapeIndex, 
   return hit;
 }
 
-SurfaceHit EmbreeScene::sphereHit(const Shape& shape, std::size_t shapeIndex, const Ray& ray, double tFloat) const {
+SurfaceHit EmbreeScene::sphereHit(const Shape& shape, std::size_t shapeIndex, const Ray& ray,
+                                  double tFloat) const {
   double t0, t1;
   double t = tFloat;
   if (sphereRoots(ray.origin, ray.direction, shape.sphere, t0, t1))  // refine in double precision
@@ -319,7 +338,8 @@ AreaSample EmbreeScene::sampleArea(std::size_t shapeIndex, double u0, double u1,
   }
   const auto& cdf = shape.triangleAreaCdf;
   const std::size_t t = std::min<std::size_t>(
-      static_cast<std::size_t>(std::upper_bound(cdf.begin(), cdf.end(), u0) - cdf.begin()), cdf.size() - 1);
+      static_cast<std::size_t>(std::upper_bound(cdf.begin(), cdf.end(), u0) - cdf.begin()),
+      cdf.size() - 1);
   const auto& tri = shape.mesh.triangles[t];
   const double su = std::sqrt(u1);  // uniform on the triangle
   const double b0 = 1 - su, b1 = u2 * su;

@@ -1,8 +1,8 @@
 // The scene's geometry in Embree 3: every ShapeDesc becomes one Embree geometry whose geomID is
-// the shape's index in SceneDesc::shapes. Meshes come from OBJ files (renderer/scene/triangle_mesh.h),
-// planes are two triangles, spheres are analytic Embree user geometry (intersected in double
-// precision, so their normals are exact). Hits are refined in double precision: triangle hits
-// from the barycentrics, sphere hits from the quadratic.
+// the shape's index in SceneDesc::shapes. Meshes come from OBJ files
+// (renderer/scene/triangle_mesh.h), planes are two triangles, spheres are analytic Embree user
+// geometry (intersected in double precision, so their normals are exact). Hits are refined in
+// double precision: triangle hits from the barycentrics, sphere hits from the quadratic.
 //
 // Embree's errors are fatal: the device's error callback prints "hylios: fatal Embree error ..."
 // and aborts (as Embree's tutorials do), since an error inside Embree leaves no state to recover.
@@ -10,6 +10,7 @@
 // Area sampling of shapes (for area lights): uniform in area over the shape.
 #pragma once
 #include <embree3/rtcore.h>
+#include <glm/glm.hpp>
 
 #include <cstddef>
 #include <limits>
@@ -17,8 +18,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "renderer/scene/scene.h"
 #include "renderer/scene/triangle_mesh.h"
@@ -51,15 +50,15 @@ struct SurfaceHit {
   glm::dvec3 shadingNormal;    ///< unit, on the geometric normal's side
   glm::dvec2 uv{0};
   bool hasUv = false;
-  std::size_t shape = 0;       ///< index into SceneDesc::shapes
-  std::size_t primitive = 0;   ///< triangle index (meshes)
+  std::size_t shape = 0;      ///< index into SceneDesc::shapes
+  std::size_t primitive = 0;  ///< triangle index (meshes)
 };
 
 /// A point drawn on a shape's surface, uniformly in area.
 struct AreaSample {
   glm::dvec3 position;
-  glm::dvec3 normal;           ///< geometric, front side
-  double pdfArea = 0;          ///< 1 / shape area
+  glm::dvec3 normal;   ///< geometric, front side
+  double pdfArea = 0;  ///< 1 / shape area
 };
 
 class EmbreeScene {
@@ -96,9 +95,10 @@ class EmbreeScene {
     double area = 0;
   };
   void addShapes(const SceneDesc& scene);
-  SurfaceHit triangleHit(const Shape& shape, std::size_t shapeIndex, std::size_t primitive, double u, double v,
-                         const Ray& ray) const;
-  SurfaceHit sphereHit(const Shape& shape, std::size_t shapeIndex, const Ray& ray, double tFloat) const;
+  SurfaceHit triangleHit(const Shape& shape, std::size_t shapeIndex, std::size_t primitive,
+                         double u, double v, const Ray& ray) const;
+  SurfaceHit sphereHit(const Shape& shape, std::size_t shapeIndex, const Ray& ray,
+                       double tFloat) const;
 
   EmbreeDevice device_;
   RTCScene scene_ = nullptr;

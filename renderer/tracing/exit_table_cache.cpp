@@ -1,14 +1,14 @@
 #include "renderer/tracing/exit_table_cache.h"
 
-#include <fcntl.h>
 #include <sys/file.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
+#include <fcntl.h>
 #include <iostream>
 #include <optional>
 #include <system_error>
+#include <unistd.h>
 
 #include "skin/core/content_hash.h"
 
@@ -23,10 +23,10 @@ static_assert(std::atomic<int>::is_always_lock_free, "read by signal handlers");
 /// error) when the file cannot be opened, so that a read-only cache still works.
 class FileLock {
  public:
-  explicit FileLock(const std::filesystem::path& path) : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+  explicit FileLock(const std::filesystem::path& path)
+      : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
     if (fd_ < 0) return;
-    while (::flock(fd_, LOCK_EX) != 0 && errno == EINTR) {
-    }
+    while (::flock(fd_, LOCK_EX) != 0 && errno == EINTR) {}
   }
   ~FileLock() {
     if (fd_ >= 0) ::close(fd_);  // closing releases the lock
@@ -52,8 +52,10 @@ std::filesystem::path ExitTableCache::userFolder() {
     return v ? std::string(v) : std::string();
   };
   if (const std::string dir = env("HYLIOS_CACHE_DIR"); !dir.empty()) return dir;
-  if (const std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty()) return std::filesystem::path(xdg) / "hylios";
-  if (const std::string home = env("HOME"); !home.empty()) return std::filesystem::path(home) / ".cache" / "hylios";
+  if (const std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty())
+    return std::filesystem::path(xdg) / "hylios";
+  if (const std::string home = env("HOME"); !home.empty())
+    return std::filesystem::path(home) / ".cache" / "hylios";
   return {};
 }
 
@@ -74,15 +76,16 @@ bool ExitTableCache::folderUsable() {
     usable_ = !error && std::filesystem::is_directory(folder_, error);
     if (!usable_)
       std::call_once(warned_, [&] {
-        std::cerr << "warning: exit-table cache folder '" << folder_.string() << "' cannot be created ("
-                  << error.message() << "); tables are built in memory only\n";
+        std::cerr << "warning: exit-table cache folder '" << folder_.string()
+                  << "' cannot be created (" << error.message()
+                  << "); tables are built in memory only\n";
       });
   });
   return usable_;
 }
 
-std::shared_ptr<const skin::ExitTable> ExitTableCache::get(const skin::SkinWalk& walk,
-                                                           const skin::ExitTableSettings& settings) {
+std::shared_ptr<const skin::ExitTable> ExitTableCache::get(
+    const skin::SkinWalk& walk, const skin::ExitTableSettings& settings) {
   const std::uint64_t key = skin::ExitTable::key(walk.optics(), walk.options(), settings);
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -123,7 +126,9 @@ std::shared_ptr<const skin::ExitTable> ExitTableCache::get(const skin::SkinWalk&
       try {
         table->write(fileFor(key));
       } catch (const std::exception& e) {
-        std::call_once(warned_, [&] { std::cerr << "warning: " << e.what() << "; exit tables are kept in memory only\n"; });
+        std::call_once(warned_, [&] {
+          std::cerr << "warning: " << e.what() << "; exit tables are kept in memory only\n";
+        });
       }
     }
   }

@@ -37,12 +37,13 @@ class ExitTableCache {
   static ExitTableCache& shared();
 
   /// The table of `walk` with `settings`: from memory, from disk, or built (and written).
-  std::shared_ptr<const skin::ExitTable> get(const skin::SkinWalk& walk, const skin::ExitTableSettings& settings);
+  std::shared_ptr<const skin::ExitTable> get(const skin::SkinWalk& walk,
+                                             const skin::ExitTableSettings& settings);
 
   const std::filesystem::path& folder() const { return folder_; }
   std::filesystem::path fileFor(std::uint64_t key) const;
-  std::size_t loaded() const { return loaded_; }   ///< tables read from disk
-  std::size_t built() const { return built_; }     ///< tables built by walks
+  std::size_t loaded() const { return loaded_; }      ///< tables read from disk
+  std::size_t built() const { return built_; }        ///< tables built by walks
   std::size_t rejected() const { return rejected_; }  ///< files found but invalid (then rebuilt)
 
   /// Exit tables being built in this process now (async-signal-safe to read: a lock-free atomic),
@@ -63,7 +64,8 @@ class ExitTableCache {
   std::filesystem::path folder_;
   std::mutex mutex_;
   std::map<std::uint64_t, std::shared_ptr<const skin::ExitTable>> tables_;
-  std::set<std::uint64_t> claimed_;  ///< keys whose file lock a thread of this object holds or awaits
+  std::set<std::uint64_t>
+      claimed_;  ///< keys whose file lock a thread of this object holds or awaits
   std::atomic<std::size_t> loaded_{0}, built_{0}, rejected_{0};
   std::once_flag folderChecked_, warned_;
   bool usable_ = false;

@@ -9,9 +9,9 @@
 // and where freckles overlap the one with the largest |m − 1| wins. Everything follows from
 // (seed, cell) through skin::mix64, so the pattern is the same at any thread count and any run.
 #pragma once
-#include <cstdint>
-
 #include <glm/glm.hpp>
+
+#include <cstdint>
 
 #include "renderer/scene/scene.h"
 

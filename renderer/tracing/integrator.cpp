@@ -15,11 +15,11 @@
 #include "renderer/image/film_output.h"
 #include "renderer/scene/data_paths.h"
 #include "renderer/scene/emission_spectrum.h"
-#include "skin/sampling/cosine_sampling.h"
-#include "skin/fresnel.h"
-#include "skin/core/vector3.h"
 #include "renderer/tracing/surface_vectors.h"
 #include "skin/core/constants.h"
+#include "skin/core/vector3.h"
+#include "skin/fresnel.h"
+#include "skin/sampling/cosine_sampling.h"
 
 namespace hylios {
 namespace {
@@ -56,8 +56,10 @@ void RenderStats::add(const RenderStats& o) {
 
 Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channelWavelengths)
     : scene_(scene), wavelengths_(channelWavelengths) {
-  if (scene.integrator.maxDepth < 0) throw SceneError(scene.integrator.where, "max_depth must be >= 0");
-  if (!(scene.unitCm > 0) || !std::isfinite(scene.unitCm)) throw SceneError({scene.file.string(), 0, 0}, "unit_cm must be > 0");
+  if (scene.integrator.maxDepth < 0)
+    throw SceneError(scene.integrator.where, "max_depth must be >= 0");
+  if (!(scene.unitCm > 0) || !std::isfinite(scene.unitCm))
+    throw SceneError({scene.file.string(), 0, 0}, "unit_cm must be > 0");
   camera_ = std::make_unique<Camera>(scene.camera, scene.film.width, scene.film.height);
   geometry_ = std::make_unique<EmbreeScene>(scene);
   // Relative to the spawning point's own magnitude (spawn()): a far or huge shape elsewhere in the
@@ -67,8 +69,10 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
   bool anySkin = false;
   for (const auto& m : scene.materials) anySkin = anySkin || m.kind == MaterialDesc::Kind::Skin;
   std::unique_ptr<skin::SpectralDatabase> spectra;
-  if (anySkin) spectra = std::make_unique<skin::SpectralDatabase>(skin::SpectralDatabase::load(spectraDir()));
-  spectral_ = scene.integrator.estimator == skin::Estimator::Spectral && scene.integrator.skinMode != skin::SkinMode::Table;
+  if (anySkin)
+    spectra = std::make_unique<skin::SpectralDatabase>(skin::SpectralDatabase::load(spectraDir()));
+  spectral_ = scene.integrator.estimator == skin::Estimator::Spectral &&
+              scene.integrator.skinMode != skin::SkinMode::Table;
   std::vector<std::vector<std::size_t>> bundles;  // the film's bands, as channel lists
   if (spectral_) {
     const Film layout(scene.film);
@@ -80,15 +84,15 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
     std::size_t index = scene.materials.size();
     for (std::size_t i = 0; i < scene.materials.size(); ++i)
       if (scene.materials[i].name == shape.material) index = i;
-    if (index == scene.materials.size()) throw SceneError(shape.where, "unknown material '" + shape.material + "'");
+    if (index == scene.materials.size())
+      throw SceneError(shape.where, "unknown material '" + shape.material + "'");
     materialOfShape_.push_back(index);
   }
 }
 
-Integrator::Material Integrator::makeMaterial(const SceneDesc& scene, std::size_t index,
-                                              const std::vector<double>& channelWavelengths,
-                                              const skin::SpectralDatabase* spectra,
-                                              const std::vector<std::vector<std::size_t>>& bundles) {
+Integrator::Material Integrator::makeMaterial(
+    const SceneDesc& scene, std::size_t index, const std::vector<double>& channelWavelengths,
+    const skin::SpectralDatabase* spectra, const std::vector<std::vector<std::size_t>>& bundles) {
   const MaterialDesc& desc = scene.materials[index];
   Material m;
   m.kind = desc.kind;
@@ -97,8 +101,9 @@ Integrator::Material Integrator::makeMaterial(const SceneDesc& scene, std::size_
       for (double w : channelWavelengths) {
         const double rho = evaluateEmission(desc.reflectance, w);
         if (!(rho >= 0 && rho <= 1))
-          throw SceneError(desc.reflectance.where, "diffuse reflectance must lie in [0, 1]; it is " +
-                                                       std::to_string(rho) + " at " + std::to_string(w) + " nm");
+          throw SceneError(desc.reflectance.where,
+                           "diffuse reflectance must lie in [0, 1]; it is " + std::to_string(rho) +
+                               " at " + std::to_string(w) + " nm");
         m.reflectance.push_back(rho);
       }
       break;
@@ -114,8 +119,9 @@ Integrator::Material Integrator::makeMaterial(const SceneDesc& scene, std::size_
       for (const auto& s : scene.shapes) used = used || s.material == desc.name;
       if (!used) break;  // only the skin that the scene shows is prepared
       const skin::Specimen specimen = loadMaterialSpecimen(desc, specimenDir());
-      m.skin = std::make_unique<SkinMaterial>(desc, specimen, index, scene.unitCm, channelWavelengths, *spectra,
-                                              scene.integrator.skinMode, scene.integrator.effectTolerance, bundles);
+      m.skin = std::make_unique<SkinMaterial>(
+          desc, specimen, index, scene.unitCm, channelWavelengths, *spectra,
+          scene.integrator.skinMode, scene.integrator.effectTolerance, bundles);
       break;
     }
   }
@@ -140,23 +146,26 @@ std::size_t Integrator::skippedDegenerateTriangles(std::string* report) const {
     const std::size_t n = geometry_->skippedDegenerate(i);
     total += n;
     if (n > 0)
-      text << scene_.shapes[i].where.str() << ": mesh '" << scene_.shapes[i].meshPath.string() << "': skipped " << n
-           << " degenerate triangle" << (n == 1 ? "" : "s") << "\n";
+      text << scene_.shapes[i].where.str() << ": mesh '" << scene_.shapes[i].meshPath.string()
+           << "': skipped " << n << " degenerate triangle" << (n == 1 ? "" : "s") << "\n";
   }
   if (report) *report = text.str();
   return total;
 }
 
-Ray Integrator::spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction,
-                      double tMax) const {
-  const double scale = rayOffset_ * std::max({1.0, std::fabs(point.x), std::fabs(point.y), std::fabs(point.z)});
-  return {point + sideNormal * (glm::dot(direction, sideNormal) >= 0 ? scale : -scale), direction, tMax};
+Ray Integrator::spawn(const glm::dvec3& point, const glm::dvec3& sideNormal,
+                      const glm::dvec3& direction, double tMax) const {
+  const double scale =
+      rayOffset_ * std::max({1.0, std::fabs(point.x), std::fabs(point.y), std::fabs(point.z)});
+  return {point + sideNormal * (glm::dot(direction, sideNormal) >= 0 ? scale : -scale), direction,
+          tMax};
 }
 
 template <typename Lobe>
 std::optional<Integrator::DirectSample> Integrator::directLight(const glm::dvec3& point,
-                                                               const glm::dvec3& geometricNormal, skin::Rng& rng,
-                                                               bool deltaOnly, const Lobe& lobe) const {
+                                                                const glm::dvec3& geometricNormal,
+                                                                skin::Rng& rng, bool deltaOnly,
+                                                                const Lobe& lobe) const {
   const double uSelect = rng.uniform(), u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
   const std::optional<LightSample> light = lights_->sampleGeometry(point, uSelect, u0, u1, u2);
   if (!light || (deltaOnly && !light->isDelta)) return std::nullopt;
@@ -164,7 +173,8 @@ std::optional<Integrator::DirectSample> Integrator::directLight(const glm::dvec3
   const double f = lobe(light->direction);
   if (!(f > 0)) return std::nullopt;
   const Ray shadow = spawn(point, geometricNormal, light->direction, light->distance);
-  if (!lights_->visible(shadow.origin, *light, glm::length(shadow.origin - point))) return std::nullopt;
+  if (!lights_->visible(shadow.origin, *light, glm::length(shadow.origin - point)))
+    return std::nullopt;
   const double weight = light->isDelta ? 1.0 : powerHeuristic(light->pdf, f);
   return DirectSample{*light, f * weight / light->pdf};
 }
@@ -178,8 +188,8 @@ void Integrator::addDirect(const std::optional<DirectSample>& direct, const Path
   }
 }
 
-Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit, skin::Rng& rng,
-                                  double& beta) const {
+Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit,
+                                  skin::Rng& rng, double& beta) const {
   const glm::dvec3 ng = hit.geometricNormal;
   const bool backFace = glm::dot(ray.direction, ng) > 0;
   const double cosIn = std::fabs(glm::dot(ray.direction, ng));
@@ -190,22 +200,25 @@ Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const 
   if (rng.uniform() < fr.reflectance) {
     direction = ray.direction + facing * (2 * cosIn);
   } else {
-    direction = toGlm(skin::refractDirection(toSkin(ray.direction), toSkin(facing), nFrom, nTo, fr.cosTransmitted));
+    direction = toGlm(skin::refractDirection(toSkin(ray.direction), toSkin(facing), nFrom, nTo,
+                                             fr.cosTransmitted));
     beta *= (nFrom / nTo) * (nFrom / nTo);
   }
   direction = glm::normalize(direction);
   return spawn(hit.position, facing, direction, std::numeric_limits<double>::infinity());
 }
 
-void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
-                          double* L) const {
+void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, skin::Rng& rng,
+                          RenderStats& stats, double* L) const {
   ++stats.paths;
   std::fill(L, L + spectrum.size(), 0.0);
-  tracePath(cameraRay, 0, std::vector<double>(spectrum.size(), 1.0), spectrum, rng, stats, L, spectrum.spectral);
+  tracePath(cameraRay, 0, std::vector<double>(spectrum.size(), 1.0), spectrum, rng, stats, L,
+            spectrum.spectral);
 }
 
-void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughput, const PathSpectrum& spectrum,
-                           skin::Rng& rng, RenderStats& stats, double* L, bool splitFirstSkinHit) const {
+void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughput,
+                           const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
+                           double* L, bool splitFirstSkinHit) const {
   const std::size_t n = spectrum.size();
   const int maxDepth = scene_.integrator.maxDepth;
   std::vector<double> albedoStore(n, 0.0);
@@ -220,12 +233,14 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
     if (!hit) {
       if (lights_->hasEnvironment()) {
         const double mis = lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->environmentPdf());
-        for (std::size_t i = 0; i < n; ++i) L[i] += beta[i] * lights_->environmentRadiance(spectrum[i]) * mis;
+        for (std::size_t i = 0; i < n; ++i)
+          L[i] += beta[i] * lights_->environmentRadiance(spectrum[i]) * mis;
       }
       break;
     }
     if (lights_->isEmitter(hit->shape)) {
-      const double mis = lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->emitterPdf(lastPoint, *hit));
+      const double mis =
+          lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->emitterPdf(lastPoint, *hit));
       for (std::size_t i = 0; i < n; ++i)
         L[i] += beta[i] * lights_->emittedRadiance(*hit, -ray.direction, spectrum[i]) * mis;
     }
@@ -239,7 +254,8 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       continue;
     }
     // Normals on the side the ray arrives from.
-    const FacingNormals facing = faceTheRay(ray.direction, hit->geometricNormal, hit->shadingNormal);
+    const FacingNormals facing =
+        faceTheRay(ray.direction, hit->geometricNormal, hit->shadingNormal);
     glm::dvec3 ng = facing.geometric, ns = facing.shading;
     glm::dvec3 point = hit->position;
     const double* lobeAlbedo = nullptr;
@@ -254,8 +270,8 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
                                         split ? surface.data() : nullptr);
       if (s.surfaceBranch) {
         for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
-        traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth, std::move(surface),
-                           spectrum, rng, stats, L);
+        traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth,
+                           std::move(surface), spectrum, rng, stats, L);
       }
       if (s.kind == SkinScatter::Kind::Absorbed) {
         ++stats.skinAbsorbed;
@@ -269,14 +285,17 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
         ++stats.skinSurfaceExits;
         const glm::dvec3 incident = ray.direction, normal = s.shadingNormal;
         addDirect(directLight(s.point, s.geometricNormal, rng, true,
-                              [&](const glm::dvec3& w) { return material.skin->surfaceLobeDensity(incident, normal, w); }),
+                              [&](const glm::dvec3& w) {
+                                return material.skin->surfaceLobeDensity(incident, normal, w);
+                              }),
                   spectrum, beta, nullptr, L);
         if (!(glm::dot(s.direction, s.geometricNormal) > 0)) {
           ++stats.belowSurface;
           break;
         }
         if (!anyThroughput()) break;
-        ray = spawn(s.point, s.geometricNormal, s.direction, std::numeric_limits<double>::infinity());
+        ray =
+            spawn(s.point, s.geometricNormal, s.direction, std::numeric_limits<double>::infinity());
         lastSpecular = true;
         lastPoint = s.point;
         continue;
@@ -309,39 +328,44 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
   }
 }
 
-double Integrator::radiance(const Ray& ray, std::size_t channel, skin::Rng& rng, RenderStats& stats) const {
+double Integrator::radiance(const Ray& ray, std::size_t channel, skin::Rng& rng,
+                            RenderStats& stats) const {
   const std::size_t channels[1] = {channel};
   double L = 0;
   radiance(ray, PathSpectrum{channels, 1, 0, false}, rng, stats, &L);
   return L;
 }
 
-void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& incident,
-                                    const glm::dvec3& direction, int depth, std::vector<double> beta,
-                                    const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
-                                    double* L) const {
+void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit,
+                                    const glm::dvec3& incident, const glm::dvec3& direction,
+                                    int depth, std::vector<double> beta,
+                                    const PathSpectrum& spectrum, skin::Rng& rng,
+                                    RenderStats& stats, double* L) const {
   ++stats.skinSurfaceExits;
   const FacingNormals facing = faceTheRay(incident, hit.geometricNormal, hit.shadingNormal);
   addDirect(directLight(hit.position, facing.geometric, rng, true,
-                        [&](const glm::dvec3& w) { return skin.surfaceLobeDensity(incident, facing.shading, w); }),
+                        [&](const glm::dvec3& w) {
+                          return skin.surfaceLobeDensity(incident, facing.shading, w);
+                        }),
             spectrum, beta.data(), nullptr, L);
   if (!(glm::dot(direction, facing.geometric) > 0)) {
     ++stats.belowSurface;
     return;
   }
-  tracePath(spawn(hit.position, facing.geometric, direction, std::numeric_limits<double>::infinity()), depth + 1,
-            std::move(beta), spectrum, rng, stats, L, false);
+  tracePath(
+      spawn(hit.position, facing.geometric, direction, std::numeric_limits<double>::infinity()),
+      depth + 1, std::move(beta), spectrum, rng, stats, L, false);
 }
 
-SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& direction,
-                                    const PathSpectrum& spectrum, skin::Rng& rng, double* beta,
-                                    double* surfaceWeights) const {
+SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
+                                    const glm::dvec3& direction, const PathSpectrum& spectrum,
+                                    skin::Rng& rng, double* beta, double* surfaceWeights) const {
   if (!spectrum.spectral)
     return skin.scatter(hit, direction, spectrum[0], *geometry_, materialOfShape_, rng);
   thread_local std::vector<double> weights;
   weights.resize(spectrum.size());
-  const SkinScatter s = skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_, materialOfShape_, rng,
-                                             weights.data(), surfaceWeights);
+  const SkinScatter s = skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_,
+                                             materialOfShape_, rng, weights.data(), surfaceWeights);
   for (std::size_t i = 0; i < spectrum.size(); ++i) beta[i] *= weights[i];
   return s;
 }
@@ -351,9 +375,10 @@ void Integrator::setCoverage(Film& film) const {
   std::vector<char> seen(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
   tbb::parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
-      const std::optional<SurfaceHit> hit = geometry_->intersect(camera_->generateRay(x + 0.5, y + 0.5, 0.5, 0.5));
-      seen[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
-          hit && !lights_->isEmitter(hit->shape);
+      const std::optional<SurfaceHit> hit =
+          geometry_->intersect(camera_->generateRay(x + 0.5, y + 0.5, 0.5, 0.5));
+      seen[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(x)] = hit && !lights_->isEmitter(hit->shape);
     }
   });
   film.setCoverage(std::vector<bool>(seen.begin(), seen.end()));
@@ -365,20 +390,25 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   film.setWholeBandSamples(spectral_);
   if (film.coverage().empty()) setCoverage(film);
   if (film.channels().size() != wavelengths_.size())
-    throw std::invalid_argument("Integrator::render: the film's channels differ from the integrator's");
+    throw std::invalid_argument(
+        "Integrator::render: the film's channels differ from the integrator's");
   for (std::size_t c = 0; c < wavelengths_.size(); ++c)
     if (film.channels()[c].wavelengthNm != wavelengths_[c])
-      throw std::invalid_argument("Integrator::render: the film's channels differ from the integrator's");
+      throw std::invalid_argument(
+          "Integrator::render: the film's channels differ from the integrator's");
   if (film.width() != scene_.film.width || film.height() != scene_.film.height)
-    throw std::invalid_argument("Integrator::render: the film's resolution differs from the scene's");
+    throw std::invalid_argument(
+        "Integrator::render: the film's resolution differs from the scene's");
   const int spp = film.desc().samplesPerPixel;
   int done = film.samplesPerPixelDone();
   if (done < 0 || done > spp)
     throw std::invalid_argument("Integrator::render: the film has " + std::to_string(done) +
                                 " samples per pixel, the target is " + std::to_string(spp));
-  if (options.samplesPerPass < 0) throw std::invalid_argument("Integrator::render: samplesPerPass must be >= 0");
-  const std::uint64_t tiles = static_cast<std::uint64_t>((film.width() + kTileSize - 1) / kTileSize) *
-                              static_cast<std::uint64_t>((film.height() + kTileSize - 1) / kTileSize);
+  if (options.samplesPerPass < 0)
+    throw std::invalid_argument("Integrator::render: samplesPerPass must be >= 0");
+  const std::uint64_t tiles =
+      static_cast<std::uint64_t>((film.width() + kTileSize - 1) / kTileSize) *
+      static_cast<std::uint64_t>((film.height() + kTileSize - 1) / kTileSize);
   std::unique_ptr<RenderProgress> progress;
   if (options.progress && done < spp)
     progress = options.progress(options.label, tiles * static_cast<std::uint64_t>(spp - done));
@@ -411,14 +441,17 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
     if (!renderPass(film, done, end, total, progress.get(),
                     firstPass ? options.stopRequested : std::function<bool()>{}))
       break;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     done = end;
     film.setSamplesPerPixelDone(done);
     if (options.onPassDone) options.onPassDone(done, seconds);
     if (options.noiseTarget && done >= nextCheck && targetReached()) break;
     if (options.samplesPerPass == 0 && seconds < kAdaptivePassSeconds && passSamples < (1 << 24)) {
-      // Aim the next pass at kAdaptivePassSeconds, growing at most 8-fold (the first passes warm up).
-      const double factor = std::min(8.0, std::round(kAdaptivePassSeconds / std::max(seconds, 1e-9)));
+      // Aim the next pass at kAdaptivePassSeconds, growing at most 8-fold (the first passes warm
+      // up).
+      const double factor =
+          std::min(8.0, std::round(kAdaptivePassSeconds / std::max(seconds, 1e-9)));
       passSamples *= std::max(1, static_cast<int>(factor));
     }
   }
@@ -436,59 +469,68 @@ bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
                             RenderProgress* progress, const std::function<bool()>& abandon) const {
   std::atomic<bool> abandoned{false};
   const int width = film.width(), height = film.height();
-  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+  const int tilesX = (width + kTileSize - 1) / kTileSize,
+            tilesY = (height + kTileSize - 1) / kTileSize;
   const std::size_t tiles = static_cast<std::size_t>(tilesX) * static_cast<std::size_t>(tilesY);
   std::mutex totalMutex;
   const std::uint64_t seed = scene_.integrator.seed;
   const std::uint64_t strata = spectral_ ? film.bandCount() : film.channels().size();
   constexpr std::uint64_t kChannelRotationStream = ~std::uint64_t{0};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles, 1), [&](const tbb::blocked_range<std::size_t>& range) {
-    RenderStats stats;
-    std::vector<double> values;
-    for (std::size_t tile = range.begin(); tile != range.end(); ++tile) {
-      if (abandoned.load(std::memory_order_relaxed) || (abandon && abandon())) {
-        abandoned.store(true, std::memory_order_relaxed);
-        break;
-      }
-      const int x0 = static_cast<int>(tile % static_cast<std::size_t>(tilesX)) * kTileSize;
-      const int y0 = static_cast<int>(tile / static_cast<std::size_t>(tilesX)) * kTileSize;
-      for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
-        for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
-          const std::uint64_t pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) +
-                                      static_cast<std::uint64_t>(x);
-          // Bands (spectral) or channels (per-wavelength) are stratified over blocks of `strata`
-          // consecutive samples of the pixel (sample s takes slice s mod strata of [0, 1), jittered),
-          // each block with its own rotation (Cranley–Patterson) from its own stream: every complete
-          // block meets every band or channel once, whenever the render stops (noise targets).
-          for (int s = firstSample; s < endSample; ++s) {
-            const std::uint64_t block = static_cast<std::uint64_t>(s) / strata;
-            const double rotation = skin::Rng(seed, pixel, kChannelRotationStream - block).uniform();
-            skin::Rng rng(seed, pixel, static_cast<std::uint64_t>(s));
-            double u = (static_cast<double>(static_cast<std::uint64_t>(s) % strata) + rng.uniform()) /
-                           static_cast<double>(strata) + rotation;
-            u -= std::floor(u);
-            u = u < 1.0 ? u : skin::kOneMinusEpsilon;
-            const double px = x + rng.uniform(), py = y + rng.uniform();
-            const double lu = rng.uniform(), lv = rng.uniform();
-            const Ray cameraRay = camera_->generateRay(px, py, lu, lv);
-            const bool odd = (s & 1) != 0;
-            if (spectral_) {  // the path carries every channel of a band
-              const std::size_t band = film.sampleBand(u);
-              const std::vector<std::size_t>& channels = film.bandChannels(band);
-              values.resize(channels.size());
-              radiance(cameraRay, PathSpectrum{channels.data(), channels.size(), band, true}, rng, stats, values.data());
-              film.addBandSample(x, y, band, values.data(), odd);
-            } else {
-              const std::size_t channel = film.sampleChannel(u);
-              film.addSample(x, y, channel, radiance(cameraRay, channel, rng, stats), odd);
-            }
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, tiles, 1),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        RenderStats stats;
+        std::vector<double> values;
+        for (std::size_t tile = range.begin(); tile != range.end(); ++tile) {
+          if (abandoned.load(std::memory_order_relaxed) || (abandon && abandon())) {
+            abandoned.store(true, std::memory_order_relaxed);
+            break;
           }
+          const int x0 = static_cast<int>(tile % static_cast<std::size_t>(tilesX)) * kTileSize;
+          const int y0 = static_cast<int>(tile / static_cast<std::size_t>(tilesX)) * kTileSize;
+          for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+            for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+              const std::uint64_t pixel =
+                  static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) +
+                  static_cast<std::uint64_t>(x);
+              // Bands (spectral) or channels (per-wavelength) are stratified over blocks of
+              // `strata` consecutive samples of the pixel (sample s takes slice s mod strata of [0,
+              // 1), jittered), each block with its own rotation (Cranley–Patterson) from its own
+              // stream: every complete block meets every band or channel once, whenever the render
+              // stops (noise targets).
+              for (int s = firstSample; s < endSample; ++s) {
+                const std::uint64_t block = static_cast<std::uint64_t>(s) / strata;
+                const double rotation =
+                    skin::Rng(seed, pixel, kChannelRotationStream - block).uniform();
+                skin::Rng rng(seed, pixel, static_cast<std::uint64_t>(s));
+                double u =
+                    (static_cast<double>(static_cast<std::uint64_t>(s) % strata) + rng.uniform()) /
+                        static_cast<double>(strata) +
+                    rotation;
+                u -= std::floor(u);
+                u = u < 1.0 ? u : skin::kOneMinusEpsilon;
+                const double px = x + rng.uniform(), py = y + rng.uniform();
+                const double lu = rng.uniform(), lv = rng.uniform();
+                const Ray cameraRay = camera_->generateRay(px, py, lu, lv);
+                const bool odd = (s & 1) != 0;
+                if (spectral_) {  // the path carries every channel of a band
+                  const std::size_t band = film.sampleBand(u);
+                  const std::vector<std::size_t>& channels = film.bandChannels(band);
+                  values.resize(channels.size());
+                  radiance(cameraRay, PathSpectrum{channels.data(), channels.size(), band, true},
+                           rng, stats, values.data());
+                  film.addBandSample(x, y, band, values.data(), odd);
+                } else {
+                  const std::size_t channel = film.sampleChannel(u);
+                  film.addSample(x, y, channel, radiance(cameraRay, channel, rng, stats), odd);
+                }
+              }
+            }
+          if (progress) progress->advance(static_cast<std::uint64_t>(endSample - firstSample));
         }
-      if (progress) progress->advance(static_cast<std::uint64_t>(endSample - firstSample));
-    }
-    std::lock_guard<std::mutex> lock(totalMutex);
-    total.add(stats);
-  });
+        std::lock_guard<std::mutex> lock(totalMutex);
+        total.add(stats);
+      });
   return !abandoned.load();
 }
 

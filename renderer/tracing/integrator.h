@@ -3,15 +3,17 @@
 // throughput per channel — hero wavelengths in the manner of pbrt-v4's SampledWavelengths; nothing
 // here is dispersive (dielectrics have one index), so a bundle never splits, and skin hits run the
 // band's spectral walk (skin_material.h). Per-wavelength estimator (and table mode): one wavelength
-// per camera path (a film channel drawn by Film::sampleChannel). Next-event estimation with multiple importance sampling (power heuristic,
-// β = 2) for area and environment lights, delta point/spot lights by next-event estimation only.
+// per camera path (a film channel drawn by Film::sampleChannel). Next-event estimation with
+// multiple importance sampling (power heuristic, β = 2) for area and environment lights, delta
+// point/spot lights by next-event estimation only.
 //
 // Materials (MaterialDesc):
 //   diffuse    — Lambertian, reflectance spectrum ρ(λ) in [0, 1]; cosine-sampled continuation;
 //                two-sided.
 //   dielectric — smooth interface of index n (air outside): Fresnel reflection or refraction chosen
 //                in proportion; refraction scales radiance by (n_i/n_t)² (pbrt's radiance mode).
-//   skin       — the HyLIoS walk (renderer/tracing/skin_material.h, where the estimator is documented).
+//   skin       — the HyLIoS walk (renderer/tracing/skin_material.h, where the estimator is
+//   documented).
 // max_depth counts scattering vertices (a skin walk is one): max_depth = 1 is direct lighting.
 // No Russian roulette: paths end at max_depth, by absorption, or by leaving the scene.
 //
@@ -29,13 +31,13 @@
 #include <utility>
 #include <vector>
 
-#include "renderer/tracing/camera.h"
-#include "renderer/tracing/embree_scene.h"
 #include "renderer/image/film.h"
 #include "renderer/image/render_noise.h"
+#include "renderer/scene/scene.h"
+#include "renderer/tracing/camera.h"
+#include "renderer/tracing/embree_scene.h"
 #include "renderer/tracing/lights.h"
 #include "renderer/tracing/render_progress.h"
-#include "renderer/scene/scene.h"
 #include "renderer/tracing/skin_material.h"
 #include "skin/core/random.h"
 
@@ -48,9 +50,9 @@ struct RenderStats {
   std::uint64_t skinAbsorbed = 0;
   std::uint64_t skinSurfaceExits = 0;
   std::uint64_t skinSubsurfaceExits = 0;
-  std::uint64_t skinEventLimited = 0;       ///< walks stopped at SkinWalk::kMaxEvents (path ended)
-  std::uint64_t exitFallbacks = 0;          ///< subsurface exits not projected onto the surface
-  std::uint64_t belowSurface = 0;           ///< continuations below the geometric surface (path ended)
+  std::uint64_t skinEventLimited = 0;  ///< walks stopped at SkinWalk::kMaxEvents (path ended)
+  std::uint64_t exitFallbacks = 0;     ///< subsurface exits not projected onto the surface
+  std::uint64_t belowSurface = 0;      ///< continuations below the geometric surface (path ended)
   void add(const RenderStats& o);
   // Set by Integrator::render (not counters): the last noise estimate when a target was given.
   std::vector<GroupNoise> noise;
@@ -69,7 +71,8 @@ struct RenderOptions {
   /// kAdaptivePassSeconds multiplied by round(kAdaptivePassSeconds / its duration), at most 8-fold,
   /// so passes settle near kAdaptivePassSeconds (the latency of a stop request).
   int samplesPerPass = 0;
-  /// Asked before each pass; true stops the render (film.samplesPerPixelDone() tells how far it got).
+  /// Asked before each pass; true stops the render (film.samplesPerPixelDone() tells how far it
+  /// got).
   std::function<bool()> stopRequested;
   /// Called after each completed pass with the samples per pixel done and the pass's duration.
   std::function<void(int samplesDone, double passSeconds)> onPassDone;
@@ -112,10 +115,13 @@ class Integrator {
     std::size_t operator[](std::size_t i) const { return channels[i]; }
   };
   /// Radiance along `ray` at each channel of `spectrum` (one path), into L[0 .. size).
-  void radiance(const Ray& ray, const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats, double* L) const;
+  void radiance(const Ray& ray, const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
+                double* L) const;
   /// Radiance along `ray` at channel `channel` (one path, per-wavelength estimator).
   double radiance(const Ray& ray, std::size_t channel, skin::Rng& rng, RenderStats& stats) const;
-  skin::Estimator estimator() const { return spectral_ ? skin::Estimator::Spectral : skin::Estimator::PerWavelength; }
+  skin::Estimator estimator() const {
+    return spectral_ ? skin::Estimator::Spectral : skin::Estimator::PerWavelength;
+  }
 
   const Camera& camera() const { return *camera_; }
   const EmbreeScene& geometry() const { return *geometry_; }
@@ -128,8 +134,8 @@ class Integrator {
  private:
   struct Material {
     MaterialDesc::Kind kind;
-    std::vector<double> reflectance;       ///< diffuse, per channel
-    double refractiveIndex = 1.5;          ///< dielectric
+    std::vector<double> reflectance;  ///< diffuse, per channel
+    double refractiveIndex = 1.5;     ///< dielectric
     std::unique_ptr<SkinMaterial> skin;
   };
   /// A light sample that reached the shading point: contribution = factor × emission(light, λ).
@@ -140,40 +146,45 @@ class Integrator {
   /// Next-event estimate at `point` for a lobe density `lobe(ω)` (per sr, cos included);
   /// deltaOnly: only point/spot lights. nullopt when nothing arrives.
   template <typename Lobe>
-  std::optional<DirectSample> directLight(const glm::dvec3& point, const glm::dvec3& geometricNormal,
-                                          skin::Rng& rng, bool deltaOnly, const Lobe& lobe) const;
+  std::optional<DirectSample> directLight(const glm::dvec3& point,
+                                          const glm::dvec3& geometricNormal, skin::Rng& rng,
+                                          bool deltaOnly, const Lobe& lobe) const;
   /// L[i] += beta[i] · albedo[i] (1 when null) · the direct sample at channel spectrum[i].
-  void addDirect(const std::optional<DirectSample>& direct, const PathSpectrum& spectrum, const double* beta,
-                 const double* albedo, double* L) const;
-  /// The skin walk at a hit for the path's spectrum; multiplies beta by the exit weights (spectral).
-  /// surfaceWeights (spectral only, may be null): the entry split's surface weights.
-  SkinScatter scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& direction,
-                          const PathSpectrum& spectrum, skin::Rng& rng, double* beta,
-                          double* surfaceWeights = nullptr) const;
+  void addDirect(const std::optional<DirectSample>& direct, const PathSpectrum& spectrum,
+                 const double* beta, const double* albedo, double* L) const;
+  /// The skin walk at a hit for the path's spectrum; multiplies beta by the exit weights
+  /// (spectral). surfaceWeights (spectral only, may be null): the entry split's surface weights.
+  SkinScatter scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
+                          const glm::dvec3& direction, const PathSpectrum& spectrum, skin::Rng& rng,
+                          double* beta, double* surfaceWeights = nullptr) const;
   /// The rest of a path from `ray` (its vertex count so far `firstDepth`) with throughput
   /// `throughput`, adding into L; splitFirstSkinHit: the first skin hit splits its entry.
-  void tracePath(Ray ray, int firstDepth, std::vector<double> throughput, const PathSpectrum& spectrum,
-                 skin::Rng& rng, RenderStats& stats, double* L, bool splitFirstSkinHit) const;
+  void tracePath(Ray ray, int firstDepth, std::vector<double> throughput,
+                 const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats, double* L,
+                 bool splitFirstSkinHit) const;
   /// The surface reflection scored at a split skin entry: next-event estimation of delta lights
   /// with the model lobe, then the reflected ray as a path of its own (no further split).
-  void traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit, const glm::dvec3& incident,
-                          const glm::dvec3& direction, int depth, std::vector<double> beta,
-                          const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats, double* L) const;
+  void traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit,
+                          const glm::dvec3& incident, const glm::dvec3& direction, int depth,
+                          std::vector<double> beta, const PathSpectrum& spectrum, skin::Rng& rng,
+                          RenderStats& stats, double* L) const;
   /// Marks the pixels whose centre ray sees a shape that does not emit (the noise mask).
   void setCoverage(Film& film) const;
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
   /// Returns false when `abandon` (checked before each tile) asked to stop: the film then holds
   /// part of the pass and must not be written.
-  bool renderPass(Film& film, int firstSample, int endSample, RenderStats& total, RenderProgress* progress,
-                  const std::function<bool()>& abandon = {}) const;
-  Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction, double tMax) const;
+  bool renderPass(Film& film, int firstSample, int endSample, RenderStats& total,
+                  RenderProgress* progress, const std::function<bool()>& abandon = {}) const;
+  Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction,
+            double tMax) const;
   /// A smooth dielectric of index `refractiveIndex` at `hit`: Fresnel-chosen mirror reflection or
   /// refraction (beta takes the radiance scaling (n_from/n_to)²); the continued ray.
-  Ray scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit, skin::Rng& rng,
-                        double& beta) const;
-  /// The material `index` of `scene` prepared for the channel wavelengths (skin: its walks or tables,
-  /// only when a shape shows it). `spectra` may be null when the scene has no skin.
-  static Material makeMaterial(const SceneDesc& scene, std::size_t index, const std::vector<double>& channelWavelengths,
+  Ray scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit,
+                        skin::Rng& rng, double& beta) const;
+  /// The material `index` of `scene` prepared for the channel wavelengths (skin: its walks or
+  /// tables, only when a shape shows it). `spectra` may be null when the scene has no skin.
+  static Material makeMaterial(const SceneDesc& scene, std::size_t index,
+                               const std::vector<double>& channelWavelengths,
                                const skin::SpectralDatabase* spectra,
                                const std::vector<std::vector<std::size_t>>& bundles);
 

@@ -8,18 +8,21 @@
 #include "skin/core/constants.h"
 
 namespace hylios {
-namespace {
-}
+namespace {}
 
-LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry, const std::vector<double>& channelWavelengths)
-    : geometry_(geometry), lightOfShape_(scene.shapes.size(), -1), convexShape_(scene.shapes.size(), false) {
+LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry,
+                   const std::vector<double>& channelWavelengths)
+    : geometry_(geometry),
+      lightOfShape_(scene.shapes.size(), -1),
+      convexShape_(scene.shapes.size(), false) {
   for (const LightDesc& desc : scene.lights) {
     Light light;
     light.kind = desc.kind;
     for (double wavelength : channelWavelengths) {
       const double value = evaluateEmission(desc.emission, wavelength);
       if (!(value >= 0) || !std::isfinite(value))
-        throw SceneError(desc.emission.where, "emission must be finite and >= 0 at " + std::to_string(wavelength) + " nm");
+        throw SceneError(desc.emission.where, "emission must be finite and >= 0 at " +
+                                                  std::to_string(wavelength) + " nm");
       light.emission.push_back(value);
     }
     switch (desc.kind) {
@@ -28,7 +31,8 @@ LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry, const st
         break;
       case LightDesc::Kind::Spot:
         light.position = desc.position;
-        if (!(glm::length(desc.direction) > 0)) throw SceneError(desc.where, "spot light direction is zero");
+        if (!(glm::length(desc.direction) > 0))
+          throw SceneError(desc.where, "spot light direction is zero");
         light.axis = glm::normalize(desc.direction);
         light.cosOuter = std::cos(desc.spotOuterDeg * kPi / 180);
         light.cosInner = std::cos(std::min(desc.spotInnerDeg, desc.spotOuterDeg) * kPi / 180);
@@ -37,15 +41,18 @@ LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry, const st
         std::size_t shape = scene.shapes.size();
         for (std::size_t i = 0; i < scene.shapes.size(); ++i)
           if (scene.shapes[i].name == desc.shape) shape = i;
-        if (shape == scene.shapes.size()) throw SceneError(desc.where, "unknown shape '" + desc.shape + "'");
-        if (lightOfShape_[shape] >= 0) throw SceneError(desc.where, "shape '" + desc.shape + "' already emits");
+        if (shape == scene.shapes.size())
+          throw SceneError(desc.where, "unknown shape '" + desc.shape + "'");
+        if (lightOfShape_[shape] >= 0)
+          throw SceneError(desc.where, "shape '" + desc.shape + "' already emits");
         light.shape = shape;
         convexShape_[shape] = scene.shapes[shape].kind != ShapeDesc::Kind::Mesh;
         lightOfShape_[shape] = static_cast<int>(lights_.size());
         break;
       }
       case LightDesc::Kind::Environment:
-        if (environment_ >= 0) throw SceneError(desc.where, "only one environment light is allowed");
+        if (environment_ >= 0)
+          throw SceneError(desc.where, "only one environment light is allowed");
         environment_ = static_cast<int>(lights_.size());
         break;
     }
@@ -66,8 +73,8 @@ double LightSet::emission(const LightSample& sample, std::size_t channel) const 
   return lights_[sample.light].emission[channel] * sample.geometry;
 }
 
-std::optional<LightSample> LightSet::sampleGeometry(const glm::dvec3& point, double uSelect, double u0, double u1,
-                                                    double u2) const {
+std::optional<LightSample> LightSet::sampleGeometry(const glm::dvec3& point, double uSelect,
+                                                    double u0, double u1, double u2) const {
   if (lights_.empty()) return std::nullopt;
   const double count = static_cast<double>(lights_.size());
   const std::size_t index = std::min(lights_.size() - 1, static_cast<std::size_t>(uSelect * count));
@@ -117,24 +124,28 @@ std::optional<LightSample> LightSet::sampleGeometry(const glm::dvec3& point, dou
 
 bool LightSet::visible(const glm::dvec3& origin, const LightSample& sample, double offset) const {
   if (sample.shape < 0) {
-    const double tMax = std::isfinite(sample.distance) ? sample.distance * (1 - 1e-7) - 2 * offset : sample.distance;
+    const double tMax = std::isfinite(sample.distance) ? sample.distance * (1 - 1e-7) - 2 * offset
+                                                       : sample.distance;
     return !geometry_.occluded({origin, sample.direction, tMax});
   }
   const double slack = 1e-3 * sample.distance + 2 * offset;
-  const std::optional<SurfaceHit> hit = geometry_.intersect({origin, sample.direction, sample.distance + slack});
+  const std::optional<SurfaceHit> hit =
+      geometry_.intersect({origin, sample.direction, sample.distance + slack});
   if (!hit || hit->shape != static_cast<std::size_t>(sample.shape)) return false;
   return sample.convexShape || hit->t >= sample.distance - slack;
 }
 
 double LightSet::environmentRadiance(std::size_t channel) const {
-  return environment_ >= 0 ? lights_[static_cast<std::size_t>(environment_)].emission[channel] : 0.0;
+  return environment_ >= 0 ? lights_[static_cast<std::size_t>(environment_)].emission[channel]
+                           : 0.0;
 }
 
 double LightSet::environmentPdf() const {
   return environment_ >= 0 ? 1.0 / (static_cast<double>(lights_.size()) * 4 * kPi) : 0.0;
 }
 
-double LightSet::emittedRadiance(const SurfaceHit& hit, const glm::dvec3& towardViewer, std::size_t channel) const {
+double LightSet::emittedRadiance(const SurfaceHit& hit, const glm::dvec3& towardViewer,
+                                 std::size_t channel) const {
   if (!isEmitter(hit.shape) || !(glm::dot(hit.geometricNormal, towardViewer) > 0)) return 0;
   return lights_[static_cast<std::size_t>(lightOfShape_[hit.shape])].emission[channel];
 }

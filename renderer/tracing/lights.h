@@ -15,37 +15,38 @@
 // uniformly over the sphere of directions (1/4π sr⁻¹). Point and spot lights are delta lights:
 // only next-event estimation reaches them.
 #pragma once
+#include <glm/glm.hpp>
+
 #include <cstddef>
 #include <optional>
 #include <vector>
 
-#include <glm/glm.hpp>
-
-#include "renderer/tracing/embree_scene.h"
 #include "renderer/scene/scene.h"
+#include "renderer/tracing/embree_scene.h"
 
 namespace hylios {
 
 /// A light sample as seen from a shading point.
 struct LightSample {
-  glm::dvec3 direction;     ///< unit, from the shading point towards the light
-  double distance = 0;      ///< to the sampled point; infinite for the environment
+  glm::dvec3 direction;  ///< unit, from the shading point towards the light
+  double distance = 0;   ///< to the sampled point; infinite for the environment
   /// Area/environment: radiance arriving along -direction. Delta lights: irradiance on a surface
   /// facing the light, I/d² (so contribution = lobe density × value / pdf in both cases).
   double value = 0;
-  double pdf = 0;           ///< selection × solid-angle density (delta lights: selection only)
+  double pdf = 0;  ///< selection × solid-angle density (delta lights: selection only)
   bool isDelta = false;
   /// Area lights: the emitting shape, and whether it is convex or flat (a sphere or a plane), so
   /// that nothing of it can hide the sampled point (a mesh may shadow itself).
   int shape = -1;
   bool convexShape = false;
-  std::size_t light = 0;   ///< which light was sampled
-  double geometry = 1;     ///< the channel-free factor of value: falloff/d² (delta lights), else 1
+  std::size_t light = 0;  ///< which light was sampled
+  double geometry = 1;    ///< the channel-free factor of value: falloff/d² (delta lights), else 1
 };
 
 class LightSet {
  public:
-  LightSet(const SceneDesc& scene, const EmbreeScene& geometry, const std::vector<double>& channelWavelengths);
+  LightSet(const SceneDesc& scene, const EmbreeScene& geometry,
+           const std::vector<double>& channelWavelengths);
   /// Whether nothing blocks the light sample as seen from `origin` (an offset shading point).
   /// Area lights: the first surface along the ray must be the light's own shape, at the sampled
   /// point (meshes) or anywhere (convex/flat shapes: a float ray grazing a sphere's silhouette
@@ -57,22 +58,26 @@ class LightSet {
   /// One light sample for a shading point, without a channel (the light's choice and point do not
   /// depend on it): value = geometry; emission(sample, c) gives the value at channel c. nullopt
   /// when the chosen light sends nothing there.
-  std::optional<LightSample> sampleGeometry(const glm::dvec3& point, double uSelect, double u0, double u1,
-                                            double u2) const;
+  std::optional<LightSample> sampleGeometry(const glm::dvec3& point, double uSelect, double u0,
+                                            double u1, double u2) const;
   /// value of `sample` at channel `channel`.
   double emission(const LightSample& sample, std::size_t channel) const;
 
   bool hasEnvironment() const { return environment_ >= 0; }
   double environmentRadiance(std::size_t channel) const;
-  /// Selection × solid-angle density with which sampleGeometry() yields a given environment direction.
+  /// Selection × solid-angle density with which sampleGeometry() yields a given environment
+  /// direction.
   double environmentPdf() const;
 
   /// Whether a shape emits, and its radiance towards `towardViewer` (unit, from the surface to the
   /// viewer) at a hit: 0 from the back side.
-  bool isEmitter(std::size_t shape) const { return shape < lightOfShape_.size() && lightOfShape_[shape] >= 0; }
-  double emittedRadiance(const SurfaceHit& hit, const glm::dvec3& towardViewer, std::size_t channel) const;
-  /// Selection × solid-angle density with which sampleGeometry() from `from` yields the point `hit` on an
-  /// emitting shape.
+  bool isEmitter(std::size_t shape) const {
+    return shape < lightOfShape_.size() && lightOfShape_[shape] >= 0;
+  }
+  double emittedRadiance(const SurfaceHit& hit, const glm::dvec3& towardViewer,
+                         std::size_t channel) const;
+  /// Selection × solid-angle density with which sampleGeometry() from `from` yields the point `hit`
+  /// on an emitting shape.
   double emitterPdf(const glm::dvec3& from, const SurfaceHit& hit) const;
 
  private:

@@ -1,10 +1,9 @@
 #include "renderer/tracing/render_job.h"
 
-
 #include <algorithm>
 #include <chrono>
-#include <sstream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 #include "renderer/tracing/exit_table_cache.h"
@@ -27,7 +26,8 @@ SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings) {
   return scene;
 }
 
-std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDesc& scene, const RenderResult& result) {
+std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDesc& scene,
+                                                                  const RenderResult& result) {
   std::vector<std::pair<std::string, std::string>> attributes = {
       {"hylios:seed", std::to_string(scene.integrator.seed)},
       {"hylios:estimator", skin::estimatorName(scene.integrator.estimator)}};
@@ -43,7 +43,8 @@ std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDes
   return attributes;
 }
 
-RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings, std::ostream* log) {
+RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
+                         std::ostream* log) {
   const ThreadLimit threadLimit(settings.threads);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -57,8 +58,8 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   const Integrator integrator(scene, wavelengths);
   if (tableMode && log) {
     const ExitTableCache& cache = ExitTableCache::shared();
-    *log << "exit tables: " << cache.loaded() - loadedBefore << " loaded, " << cache.built() - builtBefore
-         << " built (cache '" << cache.folder().string() << "')\n";
+    *log << "exit tables: " << cache.loaded() - loadedBefore << " loaded, "
+         << cache.built() - builtBefore << " built (cache '" << cache.folder().string() << "')\n";
   }
   std::string degenerate;
   if (integrator.skippedDegenerateTriangles(&degenerate) > 0 && log) *log << degenerate;
@@ -66,9 +67,12 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   if (settings.resumeFrom) {
     const RenderCheckpoint& saved = *settings.resumeFrom;
     result.film->setWholeBandSamples(integrator.estimator() == skin::Estimator::Spectral);
-    result.film->restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts, saved.samplesPerPixelDone);
+    result.film->restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts,
+                              saved.samplesPerPixelDone);
     result.samplesPerPixelAtStart = saved.samplesPerPixelDone;
-    if (log) *log << "continuing from " << saved.samplesPerPixelDone << " of " << scene.film.samplesPerPixel << " spp\n";
+    if (log)
+      *log << "continuing from " << saved.samplesPerPixelDone << " of "
+           << scene.film.samplesPerPixel << " spp\n";
   }
   const auto prepared = Clock::now();
   RenderOptions options;
@@ -79,31 +83,38 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   // A line after the first pass, then at most one every 10 s (the progress bar shows the rest).
   auto lastReport = Clock::time_point{};
   options.onPassDone = [&](int samplesDone, double) {
-    if (!log || (lastReport != Clock::time_point{} && Clock::now() - lastReport < std::chrono::seconds(10))) return;
+    if (!log ||
+        (lastReport != Clock::time_point{} && Clock::now() - lastReport < std::chrono::seconds(10)))
+      return;
     lastReport = Clock::now();
-    *log << "  pass done: " << samplesDone << "/" << scene.film.samplesPerPixel << " spp" << std::endl;
+    *log << "  pass done: " << samplesDone << "/" << scene.film.samplesPerPixel << " spp"
+         << std::endl;
   };
   result.stats = integrator.render(*result.film, options);
-  result.stopped =
-      result.film->samplesPerPixelDone() < scene.film.samplesPerPixel && !result.stats.noiseTargetReached;
+  result.stopped = result.film->samplesPerPixelDone() < scene.film.samplesPerPixel &&
+                   !result.stats.noiseTargetReached;
   const auto done = Clock::now();
   result.prepareSeconds = std::chrono::duration<double>(prepared - start).count();
   result.renderSeconds = std::chrono::duration<double>(done - prepared).count();
   if (log) {
     const RenderStats& s = result.stats;
-    *log << scene.file.filename().string() << ": " << scene.film.width << "x" << scene.film.height << ", "
-         << scene.film.samplesPerPixel << " spp" << (result.stopped ? " (stopped at " + std::to_string(result.film->samplesPerPixelDone()) + ")" : "")
-         << ", " << wavelengths.size() << " channels; prepared in "
-         << result.prepareSeconds << " s, rendered in " << result.renderSeconds << " s ("
+    *log << scene.file.filename().string() << ": " << scene.film.width << "x" << scene.film.height
+         << ", " << scene.film.samplesPerPixel << " spp"
+         << (result.stopped
+                 ? " (stopped at " + std::to_string(result.film->samplesPerPixelDone()) + ")"
+                 : "")
+         << ", " << wavelengths.size() << " channels; prepared in " << result.prepareSeconds
+         << " s, rendered in " << result.renderSeconds << " s ("
          << static_cast<double>(s.paths) / std::max(result.renderSeconds, 1e-9) << " paths/s)\n"
-         << "  skin walks " << s.skinWalks << " (absorbed " << s.skinAbsorbed << ", surface " << s.skinSurfaceExits
-         << ", subsurface " << s.skinSubsurfaceExits << ", event limit " << s.skinEventLimited
-         << "); exit-projection fallbacks " << s.exitFallbacks << "; continuations below the surface "
-         << s.belowSurface << "\n";
+         << "  skin walks " << s.skinWalks << " (absorbed " << s.skinAbsorbed << ", surface "
+         << s.skinSurfaceExits << ", subsurface " << s.skinSubsurfaceExits << ", event limit "
+         << s.skinEventLimited << "); exit-projection fallbacks " << s.exitFallbacks
+         << "; continuations below the surface " << s.belowSurface << "\n";
     if (scene.integrator.noiseTarget)
       *log << "  estimated noise (median per-pixel relative, over pixels that see an object) after "
            << result.film->samplesPerPixelDone() << " spp, target " << *scene.integrator.noiseTarget
-           << (s.noiseTargetReached ? " reached" : " not reached (spp cap)") << ":\n" << formatNoise(s.noise);
+           << (s.noiseTargetReached ? " reached" : " not reached (spp cap)") << ":\n"
+           << formatNoise(s.noise);
   }
   return result;
 }

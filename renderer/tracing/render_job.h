@@ -5,8 +5,8 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
-#include <iosfwd>
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "renderer/image/film.h"
-#include "renderer/tracing/integrator.h"
 #include "renderer/image/render_checkpoint.h"
 #include "renderer/scene/scene.h"
+#include "renderer/tracing/integrator.h"
 
 namespace hylios {
 
@@ -24,13 +24,13 @@ struct RenderSettings {
   std::optional<int> samplesPerPixel;
   std::optional<int> width, height;
   std::optional<std::uint64_t> seed;
-  int threads = 0;          ///< 0: all cores
-  RenderProgressFactory progress;  ///< empty: no progress display
-  std::optional<skin::SkinMode> skinMode;  ///< the scene's when unset
-  std::optional<double> effectTolerance;   ///< ε of the effect planner (the scene's when unset)
-  bool explain = false;                    ///< print the effect plans before rendering
+  int threads = 0;                           ///< 0: all cores
+  RenderProgressFactory progress;            ///< empty: no progress display
+  std::optional<skin::SkinMode> skinMode;    ///< the scene's when unset
+  std::optional<double> effectTolerance;     ///< ε of the effect planner (the scene's when unset)
+  bool explain = false;                      ///< print the effect plans before rendering
   std::optional<skin::Estimator> estimator;  ///< the scene's when unset
-  std::optional<double> noiseTarget;       ///< the scene's when unset (renderer/image/render_noise.h)
+  std::optional<double> noiseTarget;  ///< the scene's when unset (renderer/image/render_noise.h)
   /// Interruptible renders (render --resume): asked between sample passes, true stops the render.
   std::function<bool()> stopRequested;
   /// A checkpoint's state to continue (readMatchingCheckpoint has checked it against the scene).
@@ -51,7 +51,8 @@ SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings);
 
 /// The EXR attributes of a finished render: hylios:seed, hylios:estimator and, with a noise
 /// target, hylios:noiseTarget and hylios:noise (each group's estimated median relative noise).
-std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDesc& scene, const RenderResult& result);
+std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDesc& scene,
+                                                                  const RenderResult& result);
 
 /// Renders `scene` (after applyRenderSettings); writes a short report to `log` (may be null).
 RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings, std::ostream* log);

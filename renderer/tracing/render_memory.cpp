@@ -67,11 +67,13 @@ void checkRenderMemory(const SceneDesc& scene) {
   std::uint64_t channels = 0;
   for (const BandDesc& band : scene.film.bands) channels += band.channelWavelengths().size();
   constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
-  throw std::runtime_error(fmt::format(
-      "{}: a {}x{} film with {} channels needs about {:.1f} GiB, but only {:.1f} GiB of memory is available{}; "
-      "lower --resolution or the number of channels",
-      scene.file.string(), scene.film.width, scene.film.height, channels, static_cast<double>(need) / kGiB,
-      static_cast<double>(*have) / kGiB, std::getenv("HYLIOS_MEMORY_BUDGET") ? " ($HYLIOS_MEMORY_BUDGET)" : ""));
+  throw std::runtime_error(
+      fmt::format("{}: a {}x{} film with {} channels needs about {:.1f} GiB, but only {:.1f} GiB "
+                  "of memory is available{}; "
+                  "lower --resolution or the number of channels",
+                  scene.file.string(), scene.film.width, scene.film.height, channels,
+                  static_cast<double>(need) / kGiB, static_cast<double>(*have) / kGiB,
+                  std::getenv("HYLIOS_MEMORY_BUDGET") ? " ($HYLIOS_MEMORY_BUDGET)" : ""));
 }
 
 }  // namespace hylios

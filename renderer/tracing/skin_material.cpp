@@ -5,10 +5,10 @@
 #include <exception>
 #include <stdexcept>
 
-#include "skin/sampling/surface_normal_sampling.h"
-#include "skin/core/vector3.h"
 #include "renderer/tracing/surface_vectors.h"
 #include "skin/core/constants.h"
+#include "skin/core/vector3.h"
+#include "skin/sampling/surface_normal_sampling.h"
 
 namespace hylios {
 namespace {
@@ -33,7 +33,8 @@ double facetReflectionLeaves(double s, double cosIncident) {
     for (int j = 0; j < kLobeTableStrata; ++j) {
       const double theta = skin::sampleSurfaceNormalPolar(s, (i + 0.5) / kLobeTableStrata);
       const double phi = 2 * kPi * (j + 0.5) / kLobeTableStrata;
-      const skin::Vec3 m{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), -std::cos(theta)};
+      const skin::Vec3 m{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                         -std::cos(theta)};
       const double dm = skin::dot(d, m);
       if (!(dm < 0)) continue;
       const skin::Vec3 out = d - m * (2 * dm);
@@ -44,12 +45,14 @@ double facetReflectionLeaves(double s, double cosIncident) {
 
 }  // namespace
 
-skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesystem::path& specimenDir) {
+skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc,
+                                    const std::filesystem::path& specimenDir) {
   try {
     skin::Specimen specimen = skin::loadSpecimen(desc.skin.specimen, specimenDir);
     for (const auto& o : desc.skin.overrides) skin::applyOverride(specimen, o);
     const double extra = desc.skin.waterReduction;
-    if (!(extra >= 0 && extra <= 1)) throw SceneError(desc.where, "water reduction must lie in [0, 1]");
+    if (!(extra >= 0 && extra <= 1))
+      throw SceneError(desc.where, "water reduction must lie in [0, 1]");
     specimen.waterReduction = 1 - (1 - specimen.waterReduction) * (1 - extra);
     skin::validateSpecimen(specimen);
     return specimen;
@@ -60,13 +63,18 @@ skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesys
   }
 }
 
-SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex,
-                           double unitCm, const std::vector<double>& channelWavelengths,
+SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen,
+                           std::size_t materialIndex, double unitCm,
+                           const std::vector<double>& channelWavelengths,
                            const skin::SpectralDatabase& spectra, skin::SkinMode skinMode,
-                           double effectTolerance, const std::vector<std::vector<std::size_t>>& bundles)
-    : materialIndex_(materialIndex), unitCm_(unitCm), aspectRatio_(specimen.surfaceFoldAspectRatio),
+                           double effectTolerance,
+                           const std::vector<std::vector<std::size_t>>& bundles)
+    : materialIndex_(materialIndex),
+      unitCm_(unitCm),
+      aspectRatio_(specimen.surfaceFoldAspectRatio),
       freckles_(desc.skin.freckles, desc.where) {
-  if (!(unitCm > 0) || !std::isfinite(unitCm)) throw SceneError(desc.where, "unit_cm must be a positive number");
+  if (!(unitCm > 0) || !std::isfinite(unitCm))
+    throw SceneError(desc.where, "unit_cm must be a positive number");
   if (!desc.skin.melaninMap.empty()) {
     melaninMap_ = std::make_unique<TextureMap>(desc.skin.melaninMap, desc.where);
     mapMin_ = desc.skin.melaninMapMin;
@@ -77,13 +85,16 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
   const double lo = std::min(mapMin_, mapMax_) * freckles_.minMultiplier();
   const double hi = std::max(mapMin_, mapMax_) * freckles_.maxMultiplier();
   const bool tableMode = skinMode == skin::SkinMode::Table;
-  walks_ = std::make_unique<SkinWalkCache>(specimen, lo, hi, channelWavelengths, spectra, desc.where,
-                                           tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
-                                           effectTolerance, tableMode ? std::vector<std::vector<std::size_t>>{} : bundles);
+  walks_ = std::make_unique<SkinWalkCache>(
+      specimen, lo, hi, channelWavelengths, spectra, desc.where,
+      tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
+      effectTolerance, tableMode ? std::vector<std::vector<std::size_t>>{} : bundles);
   if (tableMode)
-    tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(), SkinTableCache::renderSettings());
+    tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(),
+                                               SkinTableCache::renderSettings());
   for (int i = 0; i < kLobeTableSize; ++i)
-    lobeNormalisation_.push_back(facetReflectionLeaves(aspectRatio_, static_cast<double>(i) / (kLobeTableSize - 1)));
+    lobeNormalisation_.push_back(
+        facetReflectionLeaves(aspectRatio_, static_cast<double>(i) / (kLobeTableSize - 1)));
 }
 
 double SkinMaterial::melaninMultiplier(const SurfaceHit& hit) const {
@@ -99,7 +110,8 @@ double SkinMaterial::surfaceLobeNormalisation(double cosIncident) const {
   const double x = std::clamp(cosIncident, 0.0, 1.0) * (kLobeTableSize - 1);
   const int i = std::min(static_cast<int>(x), kLobeTableSize - 2);
   const double f = x - i;
-  return (1 - f) * lobeNormalisation_[static_cast<std::size_t>(i)] + f * lobeNormalisation_[static_cast<std::size_t>(i) + 1];
+  return (1 - f) * lobeNormalisation_[static_cast<std::size_t>(i)] +
+         f * lobeNormalisation_[static_cast<std::size_t>(i) + 1];
 }
 
 double SkinMaterial::surfaceLobeDensity(const glm::dvec3& incident, const glm::dvec3& normal,
@@ -111,11 +123,13 @@ double SkinMaterial::surfaceLobeDensity(const glm::dvec3& incident, const glm::d
   if (!(cosFacet > 0)) return 0;
   const double norm = surfaceLobeNormalisation(cosIn);
   if (!(norm > 0)) return 0;
-  return facetDensityPerSr(aspectRatio_, cosFacet) / (4 * std::fabs(glm::dot(outgoing, halfVector))) / norm;
+  return facetDensityPerSr(aspectRatio_, cosFacet) /
+         (4 * std::fabs(glm::dot(outgoing, halfVector))) / norm;
 }
 
-SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t channel,
-                                  const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
+SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direction,
+                                  std::size_t channel, const EmbreeScene& geometry,
+                                  const std::vector<std::size_t>& materialOfShape,
                                   skin::Rng& rng) const {
   // Normals facing the arriving ray (a back-face hit is treated as skin seen from outside).
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
@@ -128,10 +142,13 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
                 path.exitOffsetYCm, geometry, materialOfShape);
 }
 
-SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t bundle,
-                                          const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
-                                          skin::Rng& rng, double* weights, double* surfaceWeights) const {
-  if (tables_) throw std::logic_error("SkinMaterial::scatterSpectral: table mode has no spectral walks");
+SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction,
+                                          std::size_t bundle, const EmbreeScene& geometry,
+                                          const std::vector<std::size_t>& materialOfShape,
+                                          skin::Rng& rng, double* weights,
+                                          double* surfaceWeights) const {
+  if (tables_)
+    throw std::logic_error("SkinMaterial::scatterSpectral: table mode has no spectral walks");
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
   const skin::Frame frame(toSkin(-normals.shading));
   const skin::Vec3 incident = frame.toLocal(toSkin(direction));
@@ -140,8 +157,8 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   thread_local skin::SpectralPath path;  // reused: the walk keeps its per-λ arrays there
   walk.trace(incident, rng, path, surfaceWeights != nullptr);
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
-  SkinScatter out = exitOf(hit, direction, normals, frame, path.end, path.exitDirection, path.exitOffsetXCm,
-                           path.exitOffsetYCm, geometry, materialOfShape);
+  SkinScatter out = exitOf(hit, direction, normals, frame, path.end, path.exitDirection,
+                           path.exitOffsetXCm, path.exitOffsetYCm, geometry, materialOfShape);
   if (surfaceWeights && !path.surfaceWeight.empty()) {
     out.surfaceBranch = true;
     out.surfaceDirection = glm::normalize(toGlm(frame.toWorld(path.surfaceDirection)));
@@ -150,8 +167,9 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   return out;
 }
 
-SkinScatter SkinMaterial::exitOf(const SurfaceHit& hit, const glm::dvec3& direction, const FacingNormals& normals,
-                                 const skin::Frame& frame, skin::PathEnd end, const skin::Vec3& exitDirection,
+SkinScatter SkinMaterial::exitOf(const SurfaceHit& hit, const glm::dvec3& direction,
+                                 const FacingNormals& normals, const skin::Frame& frame,
+                                 skin::PathEnd end, const skin::Vec3& exitDirection,
                                  double offsetXCm, double offsetYCm, const EmbreeScene& geometry,
                                  const std::vector<std::size_t>& materialOfShape) const {
   const glm::dvec3 &ng = normals.geometric, &ns = normals.shading;
@@ -184,9 +202,10 @@ SkinScatter SkinMaterial::exitOf(const SurfaceHit& hit, const glm::dvec3& direct
   // a plane), then — for offsets beyond the local curvature, where the normal line misses the
   // surface — from the tangent-plane point towards a point one offset length below the entry.
   const glm::dvec3 below = hit.position - ns * offsetLength;
-  const Ray probes[3] = {{planePoint + ns * probe, -ns, 2 * probe},
-                         {planePoint - ns * probe, ns, 2 * probe},
-                         {planePoint, glm::normalize(below - planePoint), glm::length(below - planePoint)}};
+  const Ray probes[3] = {
+      {planePoint + ns * probe, -ns, 2 * probe},
+      {planePoint - ns * probe, ns, 2 * probe},
+      {planePoint, glm::normalize(below - planePoint), glm::length(below - planePoint)}};
   for (const Ray& ray : probes) {
     const std::optional<SurfaceHit> found = geometry.intersect(ray);
     if (!found || materialOfShape[found->shape] != materialIndex_) continue;

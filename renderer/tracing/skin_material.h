@@ -1,13 +1,14 @@
-// The HyLIoS skin material: at a camera-path hit on skin, the paper's random walk (skin/skin_walk.h)
-// simulates both the rough-surface reflection and the subsurface transport, and its outcome drives
-// the path (paper Sec. 4; docs/architecture.md, "Data flow").
+// The HyLIoS skin material: at a camera-path hit on skin, the paper's random walk
+// (skin/skin_walk.h) simulates both the rough-surface reflection and the subsurface transport, and
+// its outcome drives the path (paper Sec. 4; docs/architecture.md, "Data flow").
 //
-// | parameter (MaterialDesc::skin)  | meaning                                                      |
+// | parameter (MaterialDesc::skin)  | meaning |
 // |---------------------------------|--------------------------------------------------------------|
-// | specimen, overrides             | the layered skin (Tables 1–2), loaded from scenes/specimens/ |
-// | water_reduction                 | extra fraction r: water × (1 − r_specimen)(1 − r)            |
-// | melanin_map, min, max           | UV texture t → melanin multiplier min + (max − min)·t        |
-// | freckles                        | procedural spots (renderer/tracing/freckle_field.h), multiplier      |
+// | specimen, overrides             | the layered skin (Tables 1–2), loaded from scenes/specimens/
+// | | water_reduction                 | extra fraction r: water × (1 − r_specimen)(1 − r) | |
+// melanin_map, min, max           | UV texture t → melanin multiplier min + (max − min)·t        |
+// | freckles                        | procedural spots (renderer/tracing/freckle_field.h),
+// multiplier      |
 //
 // SPECTRAL ESTIMATOR (the default, scene key integrator.estimator = "spectral"): the camera path
 // carries every channel of its band, and the walk is the spectral walk (skin/spectral_walk.h) of
@@ -35,47 +36,52 @@
 //     is x + (Δx·t + Δy·b)/unitCm projected back onto the skin surface by probe rays along ∓n
 //     (from 4|Δ| above, then from 4|Δ| below), then — for offsets beyond the local curvature —
 //     towards the point |Δ| below x; only shapes of this material count. If all miss, x_o = x
-//     (counted in RenderStats::exitFallbacks). The walk itself is plane-parallel: offsets comparable
-//     to the radius of curvature (millimetres to centimetres in the near IR) are approximations. The exit lobe is modelled as
-//     Lambertian about the shading normal n_o at x_o: q(ω) = cosθ_o/π. Light is estimated at x_o by
-//     next-event estimation with q (all lights) plus a continuation along a direction sampled from
-//     q, the two combined by the power heuristic (delta lights: NEE only). The walk's own exit
-//     direction is not used for subsurface exits: MIS needs the density of the continued direction,
-//     and only a sample from q has a known one, so NEE and continuation sample the same lobe and
-//     their combination is unbiased for it.
+//     (counted in RenderStats::exitFallbacks). The walk itself is plane-parallel: offsets
+//     comparable to the radius of curvature (millimetres to centimetres in the near IR) are
+//     approximations. The exit lobe is modelled as Lambertian about the shading normal n_o at x_o:
+//     q(ω) = cosθ_o/π. Light is estimated at x_o by next-event estimation with q (all lights) plus
+//     a continuation along a direction sampled from q, the two combined by the power heuristic
+//     (delta lights: NEE only). The walk's own exit direction is not used for subsurface exits: MIS
+//     needs the density of the continued direction, and only a sample from q has a known one, so
+//     NEE and continuation sample the same lobe and their combination is unbiased for it.
 // Energy: the expected throughput leaving a skin hit is R_s(ω_c) + R_ss(ω_c) = R(ω_c), the walk's
 // total reflectance for that incidence, whatever the lobes; approximations affect only the angular
 // distribution of delta-light highlights (g) and of subsurface exitance (q). Under a uniform
 // environment L a skin pixel converges to L·R(ω_c) exactly (tests/renderer/integrator_test.cpp).
 #pragma once
+#include <glm/glm.hpp>
+
 #include <cstddef>
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include <glm/glm.hpp>
-
+#include "renderer/scene/scene.h"
+#include "renderer/scene/texture_map.h"
 #include "renderer/tracing/embree_scene.h"
 #include "renderer/tracing/freckle_field.h"
-#include "renderer/scene/scene.h"
 #include "renderer/tracing/skin_table_cache.h"
 #include "renderer/tracing/skin_walk_cache.h"
 #include "renderer/tracing/surface_vectors.h"
-#include "renderer/scene/texture_map.h"
 #include "skin/core/random.h"
-#include "skin/spectral_database.h"
 #include "skin/skin_mode.h"
+#include "skin/spectral_database.h"
 
 namespace hylios {
 
 /// How a walk at a skin hit ended, in world terms.
 struct SkinScatter {
-  enum class Kind { Absorbed, EventLimit, SurfaceReflection, SubsurfaceReflection } kind = Kind::Absorbed;
-  glm::dvec3 point;              ///< entry point (surface) or projected exit point (subsurface)
-  glm::dvec3 shadingNormal;      ///< at `point`, on the side the light left from
-  glm::dvec3 geometricNormal;    ///< at `point`, same side
-  glm::dvec3 direction;          ///< SurfaceReflection: the walk's exit direction (world, unit)
-  bool exitFallback = false;     ///< SubsurfaceReflection: no surface found, exit at the entry point
+  enum class Kind {
+    Absorbed,
+    EventLimit,
+    SurfaceReflection,
+    SubsurfaceReflection
+  } kind = Kind::Absorbed;
+  glm::dvec3 point;            ///< entry point (surface) or projected exit point (subsurface)
+  glm::dvec3 shadingNormal;    ///< at `point`, on the side the light left from
+  glm::dvec3 geometricNormal;  ///< at `point`, same side
+  glm::dvec3 direction;        ///< SurfaceReflection: the walk's exit direction (world, unit)
+  bool exitFallback = false;   ///< SubsurfaceReflection: no surface found, exit at the entry point
   /// Spectral walk with the entry split: the surface reflection scored at once (weights in the
   /// caller's array) along surfaceDirection from the entry point, besides the main outcome.
   bool surfaceBranch = false;
@@ -88,8 +94,9 @@ class SkinMaterial {
   /// index in SceneDesc::materials (exit points must land on shapes of this material).
   /// SkinMode::Table samples exit tables (skin/exit_table.h, from ExitTableCache::shared(), with
   /// SkinTableCache::kTableMelaninLevels levels) instead of walking; Walk runs the exact walk.
-  SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex, double unitCm,
-               const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
+  SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex,
+               double unitCm, const std::vector<double>& channelWavelengths,
+               const skin::SpectralDatabase& spectra,
                skin::SkinMode skinMode = skin::SkinMode::Walk,
                double effectTolerance = skin::kDefaultEffectTolerance,  ///< ε, skin/effect_plan.h
                const std::vector<std::vector<std::size_t>>& bundles = {});
@@ -110,13 +117,15 @@ class SkinMaterial {
   /// With `surfaceWeights` (not null) the entry split is on: a surface reflection that a single
   /// facet sends out is scored into surfaceWeights[i] and the walk goes on into the skin
   /// (SkinScatter::surfaceBranch; skin/skin_walk.h, WalkOptions::splitEntryReflection).
-  SkinScatter scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction, std::size_t bundle,
-                              const EmbreeScene& geometry, const std::vector<std::size_t>& materialOfShape,
-                              skin::Rng& rng, double* weights, double* surfaceWeights = nullptr) const;
+  SkinScatter scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction,
+                              std::size_t bundle, const EmbreeScene& geometry,
+                              const std::vector<std::size_t>& materialOfShape, skin::Rng& rng,
+                              double* weights, double* surfaceWeights = nullptr) const;
 
   /// The model lobe g (per sr) of a surface reflection into `outgoing` for a ray travelling along
   /// `incident` onto a surface with outward normal `normal` (all unit, world).
-  double surfaceLobeDensity(const glm::dvec3& incident, const glm::dvec3& normal, const glm::dvec3& outgoing) const;
+  double surfaceLobeDensity(const glm::dvec3& incident, const glm::dvec3& normal,
+                            const glm::dvec3& outgoing) const;
   /// N(cosθ) of the header comment (probability that a single facet reflection faces the ray
   /// and leaves the surface), interpolated from the table.
   double surfaceLobeNormalisation(double cosIncident) const;
@@ -129,9 +138,10 @@ class SkinMaterial {
  private:
   /// The walk's exit in world terms: the entry frame, the path's end, offset and direction.
   /// `normals` face the arriving ray, `frame` is the walk's (z into the skin).
-  SkinScatter exitOf(const SurfaceHit& hit, const glm::dvec3& direction, const FacingNormals& normals,
-                     const skin::Frame& frame, skin::PathEnd end, const skin::Vec3& exitDirection,
-                     double offsetXCm, double offsetYCm, const EmbreeScene& geometry,
+  SkinScatter exitOf(const SurfaceHit& hit, const glm::dvec3& direction,
+                     const FacingNormals& normals, const skin::Frame& frame, skin::PathEnd end,
+                     const skin::Vec3& exitDirection, double offsetXCm, double offsetYCm,
+                     const EmbreeScene& geometry,
                      const std::vector<std::size_t>& materialOfShape) const;
 
   std::size_t materialIndex_;
@@ -142,11 +152,12 @@ class SkinMaterial {
   FreckleField freckles_;
   std::unique_ptr<SkinWalkCache> walks_;
   std::unique_ptr<SkinTableCache> tables_;  ///< table mode only
-  std::vector<double> lobeNormalisation_;  ///< N at cosθ = i / (size − 1)
+  std::vector<double> lobeNormalisation_;   ///< N at cosθ = i / (size − 1)
 };
 
 /// The specimen of a skin material: loaded by name or path (specimenDir for names), overrides
 /// applied in order, water reduction combined. Throws SceneError at desc.where.
-skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc, const std::filesystem::path& specimenDir);
+skin::Specimen loadMaterialSpecimen(const MaterialDesc& desc,
+                                    const std::filesystem::path& specimenDir);
 
 }  // namespace hylios

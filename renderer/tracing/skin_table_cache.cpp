@@ -13,7 +13,8 @@ skin::ExitTableSettings SkinTableCache::renderSettings() {
   return settings;
 }
 
-SkinTableCache::SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache, const skin::ExitTableSettings& settings)
+SkinTableCache::SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,
+                               const skin::ExitTableSettings& settings)
     : channels_(walks.channels()) {
   // Channels that share a wavelength share a walk (SkinWalkCache prepares each wavelength once):
   // fetch one table per distinct walk, so no table is built twice.
@@ -27,7 +28,8 @@ SkinTableCache::SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache
     distinctOfSlot.push_back(at->second);
   }
   std::vector<std::shared_ptr<const skin::ExitTable>> fetched(distinct.size());
-  tbb::parallel_for(std::size_t{0}, distinct.size(), [&](std::size_t d) { fetched[d] = cache.get(*distinct[d], settings); });
+  tbb::parallel_for(std::size_t{0}, distinct.size(),
+                    [&](std::size_t d) { fetched[d] = cache.get(*distinct[d], settings); });
   for (std::size_t d : distinctOfSlot) tables_.push_back(fetched[d]);
 }
 

@@ -19,10 +19,12 @@ namespace hylios {
 class SkinTableCache {
  public:
   static constexpr int kTableMelaninLevels = 9;
-  /// The settings the renderer builds its tables with (K = 12 cosine bins, N = 40 000 rays per bin).
+  /// The settings the renderer builds its tables with (K = 12 cosine bins, N = 40 000 rays per
+  /// bin).
   static skin::ExitTableSettings renderSettings();
 
-  SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache, const skin::ExitTableSettings& settings);
+  SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,
+                 const skin::ExitTableSettings& settings);
 
   const skin::ExitTable& table(std::size_t channel, int level) const {
     return *tables_[static_cast<std::size_t>(level) * channels_ + channel];

@@ -16,7 +16,8 @@ namespace {
 
 /// One plan for a channel from pilots at the two end melanin levels (see the header).
 skin::EffectPlan planChannel(const skin::Specimen& lowest, const skin::Specimen& highest,
-                             const skin::SpectralDatabase& spectra, double wavelengthNm, double epsilon) {
+                             const skin::SpectralDatabase& spectra, double wavelengthNm,
+                             double epsilon) {
   std::vector<skin::SkinOptics> ends{skin::computeSkinOptics(lowest, spectra, wavelengthNm)};
   if (&lowest != &highest) ends.push_back(skin::computeSkinOptics(highest, spectra, wavelengthNm));
   skin::PlanOptions options;
@@ -34,23 +35,31 @@ skin::Specimen scaleMelanin(const skin::Specimen& specimen, double multiplier) {
   return scaled;
 }
 
-SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
-                             const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
-                             const SourceLocation& where, int levels, double effectTolerance,
+SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplier,
+                             double maxMultiplier, const std::vector<double>& channelWavelengths,
+                             const skin::SpectralDatabase& spectra, const SourceLocation& where,
+                             int levels, double effectTolerance,
                              const std::vector<std::vector<std::size_t>>& bundles)
-    : lo_(std::min(minMultiplier, maxMultiplier)), hi_(std::max(minMultiplier, maxMultiplier)),
-      levels_(hi_ > lo_ ? levels : 1), channels_(channelWavelengths.size()), effectTolerance_(effectTolerance) {
+    : lo_(std::min(minMultiplier, maxMultiplier)),
+      hi_(std::max(minMultiplier, maxMultiplier)),
+      levels_(hi_ > lo_ ? levels : 1),
+      channels_(channelWavelengths.size()),
+      effectTolerance_(effectTolerance) {
   if (!(effectTolerance >= 0 && effectTolerance <= 1))
-    throw SceneError(where, "effect tolerance must lie in [0, 1], got " + std::to_string(effectTolerance));
-  if (levels < 2) throw SceneError(where, "melanin levels must be at least 2, got " + std::to_string(levels));
-  if (!(lo_ >= 0) || !std::isfinite(hi_)) throw SceneError(where, "melanin multipliers must be finite and >= 0");
+    throw SceneError(where,
+                     "effect tolerance must lie in [0, 1], got " + std::to_string(effectTolerance));
+  if (levels < 2)
+    throw SceneError(where, "melanin levels must be at least 2, got " + std::to_string(levels));
+  if (!(lo_ >= 0) || !std::isfinite(hi_))
+    throw SceneError(where, "melanin multipliers must be finite and >= 0");
   std::vector<skin::Specimen> specimens;
   for (int k = 0; k < levels_; ++k) {
     specimens.push_back(scaleMelanin(specimen, levelMultiplier(k)));
     try {
       skin::validateSpecimen(specimens.back());
     } catch (const std::exception& e) {
-      throw SceneError(where, "specimen '" + specimen.name + "' with melanin × " + std::to_string(levelMultiplier(k)) +
+      throw SceneError(where, "specimen '" + specimen.name + "' with melanin × " +
+                                  std::to_string(levelMultiplier(k)) +
                                   " is not valid: " + e.what());
     }
   }
@@ -69,7 +78,8 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
     plans_.resize(distinctWavelengths_);
     tbb::parallel_for(std::size_t{0}, distinctWavelengths_, [&](std::size_t c) {
       try {
-        plans_[c] = planChannel(specimens.front(), specimens.back(), spectra, distinct[c], effectTolerance);
+        plans_[c] =
+            planChannel(specimens.front(), specimens.back(), spectra, distinct[c], effectTolerance);
       } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(errorMutex);
         if (error.empty()) error = e.what();
@@ -101,7 +111,8 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
     try {
       std::vector<skin::SkinOptics> optics;
       for (std::size_t channel : bundles[b])
-        optics.push_back(skin::computeSkinOptics(specimens[k], spectra, channelWavelengths.at(channel)));
+        optics.push_back(
+            skin::computeSkinOptics(specimens[k], spectra, channelWavelengths.at(channel)));
       spectralWalks_[i].emplace(optics, spectral);
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(errorMutex);
@@ -129,12 +140,14 @@ int SkinWalkCache::level(double multiplier, double u) const {
 std::string SkinWalkCache::explainEffectPlans() const {
   if (plans_.empty()) return "  effect planning off (epsilon = 0): every process simulated\n";
   std::string text;
-  for (const skin::EffectPlan& plan : plans_) text += plans_.size() <= 4 ? plan.explain() : "  " + plan.summary();
+  for (const skin::EffectPlan& plan : plans_)
+    text += plans_.size() <= 4 ? plan.explain() : "  " + plan.summary();
   return text;
 }
 
 const skin::SkinWalk& SkinWalkCache::walk(std::size_t channel, int level) const {
-  return *walks_[static_cast<std::size_t>(level) * distinctWavelengths_ + distinctOfChannel_[channel]];
+  return *walks_[static_cast<std::size_t>(level) * distinctWavelengths_ +
+                 distinctOfChannel_[channel]];
 }
 
 }  // namespace hylios

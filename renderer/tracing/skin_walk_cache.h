@@ -1,15 +1,15 @@
 // HyLIoS walks prepared before rendering: one skin::SkinWalk (its SkinOptics) per film channel and
-// per level of a quantised melanin multiplier, for one skin material. computeSkinOptics per hit would
-// dominate the render; here it runs levels × channels times, in parallel, before the first ray —
-// and only for the wavelengths the film needs (once each, even when bands overlap) and the materials
-// the scene has.
+// per level of a quantised melanin multiplier, for one skin material. computeSkinOptics per hit
+// would dominate the render; here it runs levels × channels times, in parallel, before the first
+// ray — and only for the wavelengths the film needs (once each, even when bands overlap) and the
+// materials the scene has.
 //
 // Melanin levels: the multiplier range [lo, hi] of the material (melanin map × freckles) is split
-// into kMelaninLevels equally spaced levels m_k = lo + k·(hi − lo)/(K − 1) (one level when lo = hi).
-// A multiplier m between m_k and m_{k+1} picks level k+1 with probability (m − m_k)/(m_{k+1} − m_k)
-// and level k otherwise (stochastic rounding with one uniform number). The expected contribution
-// is then the linear interpolation in m of the contributions at the two levels: no banding, and an
-// error of O((hi − lo)²/K²) in the curvature of the response only.
+// into kMelaninLevels equally spaced levels m_k = lo + k·(hi − lo)/(K − 1) (one level when lo =
+// hi). A multiplier m between m_k and m_{k+1} picks level k+1 with probability (m − m_k)/(m_{k+1} −
+// m_k) and level k otherwise (stochastic rounding with one uniform number). The expected
+// contribution is then the linear interpolation in m of the contributions at the two levels: no
+// banding, and an error of O((hi − lo)²/K²) in the curvature of the response only.
 //
 // The melanin multiplier scales, in every layer, the melanosome volume fraction and the colloidal
 // melanin fraction (Table 1's two melanin contents) of the specimen.
@@ -29,9 +29,9 @@
 #include "renderer/scene/scene.h"
 #include "skin/effect_plan.h"
 #include "skin/skin_walk.h"
-#include "skin/spectral_walk.h"
-#include "skin/spectral_database.h"
 #include "skin/specimen.h"
+#include "skin/spectral_database.h"
+#include "skin/spectral_walk.h"
 
 namespace hylios {
 
@@ -49,9 +49,9 @@ class SkinWalkCache {
   /// `bundles` (the spectral estimator, skin/spectral_walk.h): channel lists that each get one
   /// spectral walk per level, built from the full model (no effect plan is made then).
   SkinWalkCache(const skin::Specimen& specimen, double minMultiplier, double maxMultiplier,
-                const std::vector<double>& channelWavelengths, const skin::SpectralDatabase& spectra,
-                const SourceLocation& where, int levels = kMelaninLevels,
-                double effectTolerance = skin::kDefaultEffectTolerance,
+                const std::vector<double>& channelWavelengths,
+                const skin::SpectralDatabase& spectra, const SourceLocation& where,
+                int levels = kMelaninLevels, double effectTolerance = skin::kDefaultEffectTolerance,
                 const std::vector<std::vector<std::size_t>>& bundles = {});
 
   /// Pilot rays per melanin end level and incidence of the effect planner.
@@ -78,10 +78,11 @@ class SkinWalkCache {
   double lo_, hi_;
   int levels_;
   std::size_t channels_;
-  std::vector<std::optional<skin::SkinWalk>> walks_;  ///< [level * distinct wavelengths + distinct index]
-  std::vector<std::size_t> distinctOfChannel_;        ///< channel → distinct wavelength index
+  std::vector<std::optional<skin::SkinWalk>>
+      walks_;                                   ///< [level * distinct wavelengths + distinct index]
+  std::vector<std::size_t> distinctOfChannel_;  ///< channel → distinct wavelength index
   std::size_t distinctWavelengths_ = 0;
-  std::vector<skin::EffectPlan> plans_;               ///< per distinct wavelength; empty when ε = 0
+  std::vector<skin::EffectPlan> plans_;  ///< per distinct wavelength; empty when ε = 0
   std::vector<std::optional<skin::SpectralWalk>> spectralWalks_;  ///< [level * bundles + bundle]
   std::size_t bundleCount_ = 0;
   double effectTolerance_ = 0;

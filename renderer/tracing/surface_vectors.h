@@ -18,7 +18,8 @@ struct FacingNormals {
   glm::dvec3 geometric;
   glm::dvec3 shading;
 };
-inline FacingNormals faceTheRay(const glm::dvec3& direction, glm::dvec3 geometric, glm::dvec3 shading) {
+inline FacingNormals faceTheRay(const glm::dvec3& direction, glm::dvec3 geometric,
+                                glm::dvec3 shading) {
   if (glm::dot(direction, geometric) > 0) {
     geometric = -geometric;
     shading = -shading;

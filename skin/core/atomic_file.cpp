@@ -22,11 +22,14 @@ void writeAtomically(const std::filesystem::path& path,
   fs::path target = path;
   if (fs::is_symlink(fs::symlink_status(path, error))) {
     const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
-    if (error) throw std::runtime_error("cannot write '" + path.string() + "': cannot resolve the link: " + error.message());
+    if (error)
+      throw std::runtime_error("cannot write '" + path.string() +
+                               "': cannot resolve the link: " + error.message());
     target = resolved;
   }
   const fs::file_status status = fs::status(target, error);
-  if (fs::is_directory(status)) throw std::runtime_error("cannot write '" + path.string() + "': it is a folder");
+  if (fs::is_directory(status))
+    throw std::runtime_error("cannot write '" + path.string() + "': it is a folder");
   if (fs::exists(status) && !fs::is_regular_file(status)) {
     write(target);  // a character device, FIFO or socket: written in place, never replaced
     return;

@@ -31,12 +31,15 @@ ContentHash& ContentHash::addString(std::string_view text) {
   return addBytes(text.data(), text.size());
 }
 
-std::uint64_t fnv1a64(const void* data, std::size_t size) { return ContentHash().addBytes(data, size).value(); }
+std::uint64_t fnv1a64(const void* data, std::size_t size) {
+  return ContentHash().addBytes(data, size).value();
+}
 
 std::string hex64(std::uint64_t value) {
   static const char* digits = "0123456789abcdef";
   std::string text(16, '0');
-  for (int i = 15; i >= 0; --i, value >>= 4) text[static_cast<std::size_t>(i)] = digits[value & 0xf];
+  for (int i = 15; i >= 0; --i, value >>= 4)
+    text[static_cast<std::size_t>(i)] = digits[value & 0xf];
   return text;
 }
 

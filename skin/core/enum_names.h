@@ -56,7 +56,8 @@ std::string enumChoices(const EnumNames<E, N>& names) {
 template <typename E, std::size_t N>
 E parseEnum(std::string_view text, const EnumNames<E, N>& names, const std::string& what) {
   if (const std::optional<E> value = findEnum(text, names)) return *value;
-  throw std::invalid_argument(what + " must be " + enumChoices(names) + ", got \"" + std::string(text) + "\"");
+  throw std::invalid_argument(what + " must be " + enumChoices(names) + ", got \"" +
+                              std::string(text) + "\"");
 }
 
 /// The name of `value` ("" if the table lacks it).

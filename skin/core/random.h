@@ -20,8 +20,8 @@ constexpr std::uint64_t mix64(std::uint64_t z) {
 class Rng {
  public:
   explicit Rng(std::uint64_t seed, std::uint64_t stream = 0, std::uint64_t index = 0) {
-    std::uint64_t z = mix64(seed) ^ mix64(stream + 0x632be59bd9b4e019ULL) ^
-                      mix64(index * 0x85157af5ULL + 0x1ULL);
+    std::uint64_t z =
+        mix64(seed) ^ mix64(stream + 0x632be59bd9b4e019ULL) ^ mix64(index * 0x85157af5ULL + 0x1ULL);
     for (auto& word : state_) {
       z = mix64(z);
       word = z;

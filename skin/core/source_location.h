@@ -9,7 +9,9 @@ struct SourceLocation {
   std::string file;
   int line = 0;
   int column = 0;
-  std::string str() const { return file + ":" + std::to_string(line) + ":" + std::to_string(column); }
+  std::string str() const {
+    return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+  }
 };
 
 }  // namespace hylios

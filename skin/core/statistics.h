@@ -64,14 +64,18 @@ class Histogram {
   Histogram(double lower, double upper, std::size_t binCount)
       : lower_(lower), upper_(upper), sums_(binCount + 2, 0.0), sumSquares_(binCount + 2, 0.0) {
     if (!(upper > lower) || binCount == 0 || !std::isfinite(lower) || !std::isfinite(upper))
-      throw std::invalid_argument("Histogram: need finite lower < upper and at least one bin, got [" +
-                                  std::to_string(lower) + ", " + std::to_string(upper) + ") with " +
-                                  std::to_string(binCount) + " bins");
+      throw std::invalid_argument(
+          "Histogram: need finite lower < upper and at least one bin, got [" +
+          std::to_string(lower) + ", " + std::to_string(upper) + ") with " +
+          std::to_string(binCount) + " bins");
   }
   std::size_t binCount() const { return sums_.size() - 2; }
   double binWidth() const { return (upper_ - lower_) / static_cast<double>(binCount()); }
-  double binCentre(std::size_t bin) const { return lower_ + (static_cast<double>(bin) + 0.5) * binWidth(); }
-  /// Bin index of x: 0..binCount()-1 inside, kUnderflow below, kOverflow at or above `upper` (and NaN).
+  double binCentre(std::size_t bin) const {
+    return lower_ + (static_cast<double>(bin) + 0.5) * binWidth();
+  }
+  /// Bin index of x: 0..binCount()-1 inside, kUnderflow below, kOverflow at or above `upper` (and
+  /// NaN).
   std::size_t binOf(double x) const {
     if (x < lower_) return underflowIndex();
     if (!(x < upper_)) return overflowIndex();

@@ -14,7 +14,8 @@ class ThreadLimit {
   /// threads ≤ 0: no limit (all cores).
   explicit ThreadLimit(int threads) {
     if (threads > 0)
-      control_.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+      control_.emplace(tbb::global_control::max_allowed_parallelism,
+                       static_cast<std::size_t>(threads));
   }
 
  private:

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "skin/sampling/uniform_sample_check.h"
 #include "skin/core/constants.h"
+#include "skin/sampling/uniform_sample_check.h"
 
 namespace hylios::skin {
 namespace {

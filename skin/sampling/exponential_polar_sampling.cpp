@@ -4,22 +4,21 @@
 #include <stdexcept>
 #include <string>
 
+#include "skin/core/constants.h"
 #include "skin/sampling/bracketed_newton.h"
 #include "skin/sampling/uniform_sample_check.h"
-#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
 
-
 void requireMeanAngle(double meanAngleRad, bool allowZero, const char* where) {
   const bool zeroOk = allowZero && meanAngleRad == 0.0;
-  const bool inRange = meanAngleRad >= kMinExponentialMeanAngleRad &&
-                       meanAngleRad <= kMaxExponentialMeanAngleRad;
+  const bool inRange =
+      meanAngleRad >= kMinExponentialMeanAngleRad && meanAngleRad <= kMaxExponentialMeanAngleRad;
   if (!zeroOk && !inRange) {
-    throw std::invalid_argument(std::string(where) + ": mean angle θo = " +
-                                std::to_string(meanAngleRad) + " rad must be " +
-                                (allowZero ? "0 or " : "") + "in [1e-300, 1e6]");
+    throw std::invalid_argument(std::string(where) +
+                                ": mean angle θo = " + std::to_string(meanAngleRad) +
+                                " rad must be " + (allowZero ? "0 or " : "") + "in [1e-300, 1e6]");
   }
 }
 
@@ -102,7 +101,9 @@ double sampleExponentialPolar(double meanAngleRad, double u) {
   if (u <= 0.5) {
     const double target = u * cdf.normaliser;
     x = solveIncreasingBracketed(
-        [&](double xi) { return ValueAndSlope{cdf.cdfTimesNormaliser(xi) - target, cdf.slope(xi)}; },
+        [&](double xi) {
+          return ValueAndSlope{cdf.cdfTimesNormaliser(xi) - target, cdf.slope(xi)};
+        },
         0.0, xMax, guess);
   } else {
     const double target = (1.0 - u) * cdf.normaliser;  // 1 − u is exact for u >= 1/2

@@ -11,9 +11,9 @@
 // The numerator is rewritten as a sum of non-negative terms,
 //   1 − e^{−x}(1 + x) + e^{−x}[(θ − sinθ)/θo + 2 sin²(θ/2)],  x = θ/θo,
 // each evaluated without cancellation (series for small arguments), and F(θ) = u is solved in the
-// scaled variable x by bracketed Newton (skin/sampling/bracketed_newton.h); for u > 1/2 the complement
-// 1 − F is solved instead, so both tails keep their relative accuracy. As θo -> 0 the law of θ/θo
-// tends to a Gamma(2) law (mean 2θo). θo = 0 means no deflection: θ = 0 exactly.
+// scaled variable x by bracketed Newton (skin/sampling/bracketed_newton.h); for u > 1/2 the
+// complement 1 − F is solved instead, so both tails keep their relative accuracy. As θo -> 0 the
+// law of θ/θo tends to a Gamma(2) law (mean 2θo). θo = 0 means no deflection: θ = 0 exactly.
 #pragma once
 
 namespace hylios::skin {

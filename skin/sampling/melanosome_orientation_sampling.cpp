@@ -4,12 +4,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "skin/sampling/uniform_sample_check.h"
 #include "skin/core/constants.h"
+#include "skin/sampling/uniform_sample_check.h"
 
 namespace hylios::skin {
 namespace {
-
 
 void requireUnitDirection(const Vec3& d, const char* where) {
   const double lengthSquared = dot(d, d);

@@ -15,8 +15,8 @@
 // Sampling is exact: the sign of μ takes one half of u1's range, and |μ| = m inverts the linear
 // density χ1 + (χ2 − χ1)m on [0, 1] through the root of a quadratic written without cancellation.
 #pragma once
-#include "skin/spheroid.h"
 #include "skin/core/vector3.h"
+#include "skin/spheroid.h"
 
 namespace hylios::skin {
 

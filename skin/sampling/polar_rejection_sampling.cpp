@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "skin/core/constants.h"
 #include "skin/sampling/exponential_polar_sampling.h"
 #include "skin/sampling/surface_normal_sampling.h"
-#include "skin/core/constants.h"
 
 namespace hylios::skin {
 namespace {
@@ -17,8 +17,9 @@ constexpr double kLargestRejectionMeanAngleRad = 0.5;
 PolarCosSin sampleExponentialPolarCosSin(double meanAngleRad, Rng& rng) {
   if (meanAngleRad == 0.0) return {1.0, 0.0};
   if (!(meanAngleRad >= kMinExponentialMeanAngleRad && meanAngleRad <= kMaxExponentialMeanAngleRad))
-    throw std::invalid_argument("sampleExponentialPolarCosSin: mean angle θo = " +
-                                std::to_string(meanAngleRad) + " rad must be 0 or in [1e-300, 1e6]");
+    throw std::invalid_argument(
+        "sampleExponentialPolarCosSin: mean angle θo = " + std::to_string(meanAngleRad) +
+        " rad must be 0 or in [1e-300, 1e6]");
   if (meanAngleRad > kLargestRejectionMeanAngleRad) {
     const double theta = sampleExponentialPolar(meanAngleRad, rng.uniform());
     return {std::cos(theta), std::sin(theta), theta};
@@ -30,13 +31,17 @@ PolarCosSin sampleExponentialPolarCosSin(double meanAngleRad, Rng& rng) {
     if (!(theta <= kPi)) continue;
     const double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
     const double u3 = rng.uniform();
-    if (u3 * theta <= sinTheta) return {cosTheta, sinTheta, theta};  // accept with probability sinθ/θ
+    if (u3 * theta <= sinTheta)
+      return {cosTheta, sinTheta, theta};  // accept with probability sinθ/θ
   }
 }
 
 SurfaceNormalPolarSampler::SurfaceNormalPolarSampler(double aspectRatio)
-    : s_(aspectRatio), s2_(aspectRatio * aspectRatio), slope_(0),
-      k2_((1.0 - aspectRatio) * (1.0 + aspectRatio)), envelopeArea_(0) {
+    : s_(aspectRatio),
+      s2_(aspectRatio * aspectRatio),
+      slope_(0),
+      k2_((1.0 - aspectRatio) * (1.0 + aspectRatio)),
+      envelopeArea_(0) {
   if (!(aspectRatio >= kMinSurfaceAspectRatio && aspectRatio <= kMaxSurfaceAspectRatio))
     throw std::invalid_argument("SurfaceNormalPolarSampler: surface aspect ratio s = " +
                                 std::to_string(aspectRatio) + " must be in [1e-100, 1e10]");

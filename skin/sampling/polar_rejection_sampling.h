@@ -1,10 +1,10 @@
 // Fast exact rejection samplers for the walk's hot path, drawing as many uniforms as they need
 // from the ray's Rng. The two polar laws (the one-uniform inversions of
-// skin/sampling/exponential_polar_sampling.h and skin/sampling/surface_normal_sampling.h solve a CDF by Newton
-// steps and cost ~2,500 instructions) return the cosine and sine of θ directly, which is what a
-// perturbed direction needs. A uniform point in the unit disk (from the square, acceptance π/4)
-// gives a uniform azimuth's cosine and sine without trigonometric calls, and with Malley's
-// construction (lift the disk point to the hemisphere) a cosine-weighted direction.
+// skin/sampling/exponential_polar_sampling.h and skin/sampling/surface_normal_sampling.h solve a
+// CDF by Newton steps and cost ~2,500 instructions) return the cosine and sine of θ directly, which
+// is what a perturbed direction needs. A uniform point in the unit disk (from the square,
+// acceptance π/4) gives a uniform azimuth's cosine and sine without trigonometric calls, and with
+// Malley's construction (lift the disk point to the hemisphere) a cosine-weighted direction.
 //
 // Algorithm 2's law, p(θ) ∝ e^{−θ/θo} sinθ on [0, π]: proposal Gamma(2, θo), density
 // ∝ θ e^{−θ/θo} on [0, ∞), drawn as −θo·ln(u1·u2); accepted with probability sinθ/θ (≤ 1) when
@@ -58,7 +58,8 @@ inline Azimuth sampleAzimuth(Rng& rng) {
 }
 
 /// A unit direction about +z with density cosθ/π per steradian (z > 0; Malley's method: the disk
-/// point lifted to the hemisphere, same law as skin/sampling/cosine_sampling.h's sampleCosineHemisphere).
+/// point lifted to the hemisphere, same law as skin/sampling/cosine_sampling.h's
+/// sampleCosineHemisphere).
 inline Vec3 sampleCosineHemisphereByDisk(Rng& rng) {
   const DiskPoint p = sampleUnitDisk(rng);
   return {p.x, p.y, std::sqrt(1.0 - p.radiusSquared)};
@@ -76,11 +77,11 @@ class SurfaceNormalPolarSampler {
   double aspectRatio() const { return s_; }
 
  private:
-  double s_;            // s
-  double s2_;           // s²
-  double slope_;        // k = sqrt(1 − s²) for s < 1 (envelope s + k·c); 0 for s >= 1
-  double k2_;           // 1 − s² (may be negative)
-  double envelopeArea_; // s + k/2 for s < 1
+  double s_;             // s
+  double s2_;            // s²
+  double slope_;         // k = sqrt(1 − s²) for s < 1 (envelope s + k·c); 0 for s >= 1
+  double k2_;            // 1 − s² (may be negative)
+  double envelopeArea_;  // s + k/2 for s < 1
 };
 
 }  // namespace hylios::skin

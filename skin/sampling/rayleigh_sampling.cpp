@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "skin/sampling/uniform_sample_check.h"
 #include "skin/core/constants.h"
+#include "skin/sampling/uniform_sample_check.h"
 
 namespace hylios::skin {
 double sampleRayleighCos(double u) {

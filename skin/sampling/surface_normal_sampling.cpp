@@ -42,9 +42,12 @@ double atanhOverArgument(double y, double oneMinusY) {
 class SurfaceNormalLaw {
  public:
   explicit SurfaceNormalLaw(double s)
-      : s2_(s * s), b_((s - 1.0) * (s + 1.0)), root_(std::sqrt(std::fabs(b_))),
+      : s2_(s * s),
+        b_((s - 1.0) * (s + 1.0)),
+        root_(std::sqrt(std::fabs(b_))),
         oneMinusRoot_(b_ < 0 ? s2_ / (1.0 + root_) : 1.0 - root_),
-        phiOfB_(phiTimes(1.0, 0.0)), normaliser_(1.0 / s2_ + phiOfB_) {}
+        phiOfB_(phiTimes(1.0, 0.0)),
+        normaliser_(1.0 / s2_ + phiOfB_) {}
 
   double normaliser() const { return normaliser_; }
 
@@ -61,7 +64,8 @@ class SurfaceNormalLaw {
     const double mu = std::cos(theta), sinTheta = std::sin(theta);
     const double halfSin = std::sin(0.5 * theta);
     const double oneMinusMu = 2.0 * halfSin * halfSin;
-    const double rational = oneMinusMu * (1.0 - b_ * mu) / (s2_ * (s2_ * mu * mu + sinTheta * sinTheta));
+    const double rational =
+        oneMinusMu * (1.0 - b_ * mu) / (s2_ * (s2_ * mu * mu + sinTheta * sinTheta));
     // w·Φ(B w²) with y = √|B|·w; for B < 0, 1 − y = ((1 − μ)(1 − √−B) + s²μ)/((1 − μ) + s²μ).
     const double denominator = oneMinusMu + s2_ * mu;
     const double w = oneMinusMu / denominator;
@@ -115,13 +119,17 @@ double sampleSurfaceNormalPolar(double aspectRatio, double u) {
   if (u <= 0.5) {
     const double target = u * law.normaliser();
     return solveIncreasingBracketed(
-        [&](double t) { return ValueAndSlope{law.head(t) - target, law.slope(t)}; }, 0.0, kHalfPi,
-        guess);
+        [&](double t) {
+          return ValueAndSlope{law.head(t) - target, law.slope(t)};
+        },
+        0.0, kHalfPi, guess);
   }
   const double target = (1.0 - u) * law.normaliser();  // exact for u >= 1/2
   return solveIncreasingBracketed(
-      [&](double t) { return ValueAndSlope{target - law.tail(t), law.slope(t)}; }, 0.0, kHalfPi,
-      guess);
+      [&](double t) {
+        return ValueAndSlope{target - law.tail(t), law.slope(t)};
+      },
+      0.0, kHalfPi, guess);
 }
 
 double surfaceNormalPolarDensity(double aspectRatio, double thetaRad) {

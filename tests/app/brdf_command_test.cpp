@@ -8,13 +8,13 @@
 #include <iterator>
 #include <string>
 
-#include "app/estimator_option.h"
 #include "app/commands.h"
+#include "app/estimator_option.h"
 #include "renderer/scene/data_paths.h"
-#include "tests/support/scratch_csv.h"
+#include "skin/core/constants.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
-#include "skin/core/constants.h"
+#include "tests/support/scratch_csv.h"
 
 using hylios::kPi;
 
@@ -25,7 +25,9 @@ using test::columnOf;
 using test::readCsv;
 using test::ScratchFolder;
 
-void runBrdf(const std::string& arguments) { test::runCommandLine(registerBrdfCommand, "brdf " + arguments); }
+void runBrdf(const std::string& arguments) {
+  test::runCommandLine(registerBrdfCommand, "brdf " + arguments);
+}
 
 std::string contents(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -36,8 +38,10 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
   ScratchFolder scratch("brdf-test");
   const auto csv = scratch.path / "brdf.csv";
   const auto png = scratch.path / "brdf.png";
-  runBrdf("--specimen S1 --angle 45 --wavelengths 550 --rays 3000 --seed 5 --polar-bins 6 --azimuth-bins 4 --out " +
-          csv.string() + " --plot " + png.string());
+  runBrdf(
+      "--specimen S1 --angle 45 --wavelengths 550 --rays 3000 --seed 5 --polar-bins 6 "
+      "--azimuth-bins 4 --out " +
+      csv.string() + " --plot " + png.string());
   const auto rows = readCsv(csv);
   ASSERT_EQ(rows.size(), 1u + 6 * 4);
   const auto& header = rows[0];
@@ -47,7 +51,8 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
   EXPECT_EQ(header[5], "surface_per_sr");
   EXPECT_EQ(header[10], "total_per_sr_stderr");
   EXPECT_EQ(header[16], "total_brdf_stderr");
-  const std::size_t omega = columnOf(header, "solid_angle_sr"), total = columnOf(header, "total_per_sr"),
+  const std::size_t omega = columnOf(header, "solid_angle_sr"),
+                    total = columnOf(header, "total_per_sr"),
                     surface = columnOf(header, "surface_per_sr");
   double reflectance = 0, surfaceReflectance = 0, solidAngle = 0;
   for (std::size_t r = 1; r < rows.size(); ++r) {
@@ -65,7 +70,8 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
   run.rays = 3000;
   run.seed = 5;
   const skin::SkinTally tally =
-      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run).front();
+      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run)
+          .front();
   EXPECT_NEAR(reflectance, tally.reflectance().mean, 1e-5);
   EXPECT_NEAR(surfaceReflectance, tally.surfaceReflectance().mean, 1e-5);
   EXPECT_GT(std::filesystem::file_size(png), 1000u);
@@ -74,7 +80,8 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
 TEST(BrdfCommand, SameOutputAtAnyThreadCountAndVisibleHasEveryBin) {
   ScratchFolder scratch("brdf-threads-test");
   const auto one = scratch.path / "one.csv", two = scratch.path / "two.csv";
-  const std::string common = "--wavelengths 400,700 --rays 2000 --polar-bins 3 --azimuth-bins 2 --out ";
+  const std::string common =
+      "--wavelengths 400,700 --rays 2000 --polar-bins 3 --azimuth-bins 2 --out ";
   runBrdf(common + one.string() + " --threads 1");
   runBrdf(common + two.string() + " --threads 2");
   EXPECT_EQ(contents(one), contents(two));
@@ -86,12 +93,15 @@ TEST(BrdfCommand, SameOutputAtAnyThreadCountAndVisibleHasEveryBin) {
 TEST(BrdfCommand, BadArgumentsAreClearErrors) {
   ScratchFolder scratch("brdf-bad-test");
   const auto csv = scratch.path / "bad.csv";
-  test::expectThrowMentioning<std::invalid_argument>([&] { runBrdf("--rays 10 --out " + csv.string()); }, "--visible");
+  test::expectThrowMentioning<std::invalid_argument>(
+      [&] { runBrdf("--rays 10 --out " + csv.string()); }, "--visible");
   EXPECT_THROW(runBrdf("--visible --wavelengths 500 --out " + csv.string()), CLI::ExcludesError);
-  EXPECT_THROW(runBrdf("--wavelengths 500 --polar-bins 0 --out " + csv.string()), CLI::ValidationError);
+  EXPECT_THROW(runBrdf("--wavelengths 500 --polar-bins 0 --out " + csv.string()),
+               CLI::ValidationError);
   EXPECT_THROW(runBrdf("--wavelengths 500 --angle 90 --out " + csv.string()), CLI::ValidationError);
   EXPECT_THROW(runBrdf("--wavelengths 500"), CLI::RequiredError);
-  test::expectThrowMentioning([&] { runBrdf("--wavelengths 100 --rays 10 --out " + csv.string()); }, "100");
+  test::expectThrowMentioning([&] { runBrdf("--wavelengths 100 --rays 10 --out " + csv.string()); },
+                              "100");
   EXPECT_FALSE(std::filesystem::exists(csv));
 }
 

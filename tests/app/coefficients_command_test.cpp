@@ -1,21 +1,21 @@
 // `hylios coefficients`: the CSV covers every wavelength and layer with finite numbers for S1–S4,
 // its total column is the sum of its absorber columns, --set reaches the specimen, and the plot is
 // written.
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "app/commands.h"
-#include "tests/support/scratch_csv.h"
 #include "skin/absorber.h"
 #include "skin/layer.h"
+#include "tests/support/scratch_csv.h"
 
 namespace hylios {
 namespace {
@@ -79,8 +79,10 @@ TEST(CoefficientsCommand, SetOverridesReachTheSpecimen) {
   const auto plain = scratch.path / "plain.csv";
   const auto more = scratch.path / "more.csv";
   runCommand("--specimen S2 --wavelengths 500 --out " + plain.string());
-  runCommand("--specimen S2 --wavelengths 500 --set melanosome_percent=3 --set blood_percent=1 "
-             "--out " + more.string());
+  runCommand(
+      "--specimen S2 --wavelengths 500 --set melanosome_percent=3 --set blood_percent=1 "
+      "--out " +
+      more.string());
   const auto a = readCsv(plain);
   const auto b = readCsv(more);
   const std::size_t granulosum = 1 + skin::index(skin::Layer::StratumGranulosum);

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <string>
 
-#include "app/estimator_option.h"
 #include "app/commands.h"
+#include "app/estimator_option.h"
 #include "renderer/scene/data_paths.h"
-#include "tests/support/scratch_csv.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
+#include "tests/support/scratch_csv.h"
 
 namespace hylios {
 namespace {
@@ -28,7 +28,8 @@ TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
   ScratchFolder scratch("forward-profile-test");
   const auto csv = scratch.path / "fig8.csv";
   const auto png = scratch.path / "fig8.png";
-  runProfile("--wavelength 400 --rays 4000 --seed 3 --polar-bins 9 --out " + csv.string() + " --plot " + png.string());
+  runProfile("--wavelength 400 --rays 4000 --seed 3 --polar-bins 9 --out " + csv.string() +
+             " --plot " + png.string());
   const auto rows = readCsv(csv);
   ASSERT_EQ(rows.size(), 1u + 9);
   const auto& header = rows[0];
@@ -62,8 +63,11 @@ TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
 TEST(ForwardProfileCommand, BadArgumentsAreClearErrors) {
   ScratchFolder scratch("forward-profile-bad-test");
   const auto csv = scratch.path / "bad.csv";
-  test::expectThrowMentioning<std::invalid_argument>([&] { runProfile("--below-index water --rays 10 --out " + csv.string()); }, "--below-index 'water'");
-  EXPECT_THROW(runProfile("--below-index 0.5 --rays 10 --out " + csv.string()), std::invalid_argument);
+  test::expectThrowMentioning<std::invalid_argument>(
+      [&] { runProfile("--below-index water --rays 10 --out " + csv.string()); },
+      "--below-index 'water'");
+  EXPECT_THROW(runProfile("--below-index 0.5 --rays 10 --out " + csv.string()),
+               std::invalid_argument);
   EXPECT_THROW(runProfile("--polar-bins 0 --out " + csv.string()), CLI::ValidationError);
   EXPECT_THROW(runProfile("--rays 10"), CLI::RequiredError);
   EXPECT_ANY_THROW(runProfile("--wavelength 3000 --rays 10 --out " + csv.string()));

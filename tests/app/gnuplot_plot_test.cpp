@@ -1,11 +1,11 @@
-#include "app/gnuplot_plot.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include "app/gnuplot_plot.h"
 
 namespace fs = std::filesystem;
 
@@ -27,7 +27,8 @@ TEST(GnuplotPlot, UnequalColumnsAreAnErrorAndLeaveNoFile) {
   const fs::path png = fs::temp_directory_path() / "hylios_plot_bad.png";
   fs::remove(png);
   hylios::PlotSeries series{"bad", {1, 2, 3}, {0.1, 0.2}, {}, ""};
-  EXPECT_THROW(hylios::plotPanels(png, "t", {{"p", "x", "y", true, {series}}}), std::invalid_argument);
+  EXPECT_THROW(hylios::plotPanels(png, "t", {{"p", "x", "y", true, {series}}}),
+               std::invalid_argument);
   EXPECT_FALSE(fs::exists(png));
 }
 

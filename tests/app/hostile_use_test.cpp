@@ -5,14 +5,14 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
-#include <iterator>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "app/commands.h"
@@ -31,7 +31,8 @@ const fs::path kSource = HYLIOS_SOURCE_DIR;
 struct Scratch {
   fs::path path;
   explicit Scratch(const std::string& name)
-      : path(fs::temp_directory_path() / ("hylios-hostile-" + name + "-" + std::to_string(::getpid()))) {
+      : path(fs::temp_directory_path() /
+             ("hylios-hostile-" + name + "-" + std::to_string(::getpid()))) {
     fs::remove_all(path);
     fs::create_directories(path);
   }
@@ -75,7 +76,8 @@ std::string readAll(const fs::path& path) {
   return buffer.str();
 }
 
-const std::vector<std::string> kSlab = {"slab", "--layer", "n=1.37,mua=1,mus=100,g=0.9,d=0.1", "--rays", "200"};
+const std::vector<std::string> kSlab = {"slab", "--layer", "n=1.37,mua=1,mus=100,g=0.9,d=0.1",
+                                        "--rays", "200"};
 
 std::vector<std::string> slabWith(std::vector<std::string> extra) {
   std::vector<std::string> args = kSlab;
@@ -91,12 +93,13 @@ TEST(HostileUse, Row3RadialProfileRefusesAMaxRadiusThatGivesNanOrInf) {
   const Scratch scratch("row3");
   for (const std::string radius : {"1e-300", "1e300", "0", "nan", "inf", "-1"}) {
     const std::string out = scratch / "r.csv";
-    const std::string error = errorOf({"radial-profile", "--rays", "200", "--max-radius-cm", radius, "--out", out});
+    const std::string error =
+        errorOf({"radial-profile", "--rays", "200", "--max-radius-cm", radius, "--out", out});
     EXPECT_NE(error.find("--max-radius-cm"), std::string::npos) << radius << ": " << error;
     EXPECT_FALSE(fs::exists(out)) << radius;
   }
-  EXPECT_EQ(errorOf({"radial-profile", "--rays", "200", "--max-radius-cm", "0.2", "--bins", "10", "--out",
-                     scratch / "ok.csv"}),
+  EXPECT_EQ(errorOf({"radial-profile", "--rays", "200", "--max-radius-cm", "0.2", "--bins", "10",
+                     "--out", scratch / "ok.csv"}),
             "");
 }
 
@@ -110,41 +113,54 @@ TEST(HostileUse, Row4NegativeOrOverflowingCountsAndSeedsAreRefusedEverywhere) {
     EXPECT_NE(error.find("--rays"), std::string::npos) << rays << ": " << error;
   }
   for (const std::string seed : {"-1", "99999999999999999999999", "9223372036854775808", "1.5"}) {
-    EXPECT_NE(errorOf(slabWith({"--seed", seed, "--out", out})).find("--seed"), std::string::npos) << seed;
-    EXPECT_NE(errorOf({"spectrum", "--wavelengths", "550", "--rays", "10", "--seed", seed, "--out", out})
-                  .find("--seed"),
-              std::string::npos)
+    EXPECT_NE(errorOf(slabWith({"--seed", seed, "--out", out})).find("--seed"), std::string::npos)
         << seed;
-    EXPECT_NE(errorOf({"render", kScene, "--seed", seed, "--out", scratch / "x.exr"}).find("--seed"),
-              std::string::npos)
+    EXPECT_NE(
+        errorOf({"spectrum", "--wavelengths", "550", "--rays", "10", "--seed", seed, "--out", out})
+            .find("--seed"),
+        std::string::npos)
+        << seed;
+    EXPECT_NE(
+        errorOf({"render", kScene, "--seed", seed, "--out", scratch / "x.exr"}).find("--seed"),
+        std::string::npos)
         << seed;
   }
   for (const std::string seed : {"-1", "99999999999999999999999"}) {
-    EXPECT_NE(errorOf({"fit", "--measured", "m.csv:x", "--out", scratch / "f.toml", "--seed", seed}).find("--seed"),
+    EXPECT_NE(errorOf({"fit", "--measured", "m.csv:x", "--out", scratch / "f.toml", "--seed", seed})
+                  .find("--seed"),
               std::string::npos);
-    EXPECT_NE(errorOf({"validate", "--out", scratch / "v", "--seed", seed}).find("--seed"), std::string::npos);
+    EXPECT_NE(errorOf({"validate", "--out", scratch / "v", "--seed", seed}).find("--seed"),
+              std::string::npos);
   }
-  EXPECT_NE(errorOf({"validate", "--out", scratch / "v", "--rays", "-1"}).find("--rays"), std::string::npos);
+  EXPECT_NE(errorOf({"validate", "--out", scratch / "v", "--rays", "-1"}).find("--rays"),
+            std::string::npos);
   EXPECT_FALSE(fs::exists(out));
-  EXPECT_EQ(errorOf(slabWith({"--seed", "9223372036854775807", "--out", out})), "");  // 2^63 - 1, as scene files
+  EXPECT_EQ(errorOf(slabWith({"--seed", "9223372036854775807", "--out", out})),
+            "");  // 2^63 - 1, as scene files
 }
 
 TEST(HostileUse, Row4EpsilonNanIsRefusedByRenderAndFigureLikeSpectrum) {
   const Scratch scratch("row4eps");
   for (const std::string command : {"render", "figure"}) {
     for (const std::string epsilon : {"nan", "inf", "-0.5"}) {
-      const std::string error = errorOf({command, kScene, "--epsilon", epsilon, "--out", scratch / "x.exr"});
-      EXPECT_NE(error.find("--epsilon"), std::string::npos) << command << " " << epsilon << ": " << error;
+      const std::string error =
+          errorOf({command, kScene, "--epsilon", epsilon, "--out", scratch / "x.exr"});
+      EXPECT_NE(error.find("--epsilon"), std::string::npos)
+          << command << " " << epsilon << ": " << error;
     }
   }
   EXPECT_NE(errorOf({"spectrum", "--epsilon", "nan", "--out", scratch / "s.csv"}).find("--epsilon"),
             std::string::npos);
   for (const std::string angle : {"nan", "inf"}) {
-    EXPECT_NE(errorOf({"spectrum", "--angle", angle, "--out", scratch / "s.csv"}).find("--angle"), std::string::npos);
-    EXPECT_NE(errorOf({"fit", "--measured", "m.csv:x", "--angle", angle, "--out", scratch / "f.toml"}).find("--angle"),
+    EXPECT_NE(errorOf({"spectrum", "--angle", angle, "--out", scratch / "s.csv"}).find("--angle"),
               std::string::npos);
+    EXPECT_NE(
+        errorOf({"fit", "--measured", "m.csv:x", "--angle", angle, "--out", scratch / "f.toml"})
+            .find("--angle"),
+        std::string::npos);
   }
-  EXPECT_NE(errorOf({"render", kScene, "--noise-target", "nan", "--out", scratch / "x.exr"}).find("--noise-target"),
+  EXPECT_NE(errorOf({"render", kScene, "--noise-target", "nan", "--out", scratch / "x.exr"})
+                .find("--noise-target"),
             std::string::npos);
 }
 
@@ -167,7 +183,8 @@ TEST(HostileUse, Row5ARenderToACharacterDeviceWritesThroughItAndNoPreviewsBeside
   ASSERT_EQ(::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)), 0);  // a second /dev/null
   ASSERT_EQ(errorOf({"render", kScene, "--out", device, "--spp", "1", "--resolution", "8x8"}), "");
   EXPECT_TRUE(fs::is_character_file(fs::symlink_status(device)));
-  EXPECT_EQ(std::distance(fs::directory_iterator(scratch.path), fs::directory_iterator{}), 1);  // no null_*.png
+  EXPECT_EQ(std::distance(fs::directory_iterator(scratch.path), fs::directory_iterator{}),
+            1);  // no null_*.png
 }
 
 // ---- row 6 ------------------------------------------------------------------------------------
@@ -178,24 +195,29 @@ TEST(HostileUse, Row6AnOutputThatIsAnInputIsRefusedBeforeAnyWork) {
   const std::string scene = scratch / "x.toml";
   fs::copy_file(kScene, scene);
   const std::string sceneText = readAll(scene);
-  EXPECT_NE(errorOf({"render", scene, "--out", scene}).find("refusing to overwrite an input"), std::string::npos);
+  EXPECT_NE(errorOf({"render", scene, "--out", scene}).find("refusing to overwrite an input"),
+            std::string::npos);
   EXPECT_EQ(readAll(scene), sceneText);
   // ... also through another spelling of the same file
-  EXPECT_NE(errorOf({"render", scene, "--out", scratch / "./x.toml"}).find("input"), std::string::npos);
+  EXPECT_NE(errorOf({"render", scene, "--out", scratch / "./x.toml"}).find("input"),
+            std::string::npos);
   // render --out naming a file the scene reads (here its mesh)
   std::ofstream(scratch / "m.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   std::string withMesh = sceneText;
-  withMesh.replace(withMesh.find("[[light]]"), 9,
-                   "[[shape]]\ntype = \"mesh\"\nfile = \"m.obj\"\nmaterial = \"skin\"\n\n[[light]]");
+  withMesh.replace(
+      withMesh.find("[[light]]"), 9,
+      "[[shape]]\ntype = \"mesh\"\nfile = \"m.obj\"\nmaterial = \"skin\"\n\n[[light]]");
   std::ofstream(scratch / "mesh.toml") << withMesh;
-  EXPECT_NE(errorOf({"render", scratch / "mesh.toml", "--out", scratch / "m.obj"}).find("the input mesh"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf({"render", scratch / "mesh.toml", "--out", scratch / "m.obj"}).find("the input mesh"),
+      std::string::npos);
   EXPECT_EQ(readAll(scratch / "m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   // spectrum --specimen S.toml --out S.toml
   const std::string specimen = scratch / "S.toml";
   fs::copy_file(kSource / "scenes/specimens/S1.toml", specimen);
   const std::string specimenText = readAll(specimen);
-  EXPECT_NE(errorOf({"spectrum", "--specimen", specimen, "--wavelengths", "550", "--rays", "10", "--out", specimen})
+  EXPECT_NE(errorOf({"spectrum", "--specimen", specimen, "--wavelengths", "550", "--rays", "10",
+                     "--out", specimen})
                 .find("input"),
             std::string::npos);
   EXPECT_EQ(readAll(specimen), specimenText);
@@ -208,27 +230,30 @@ TEST(HostileUse, Row6AnOutputThatIsAnInputIsRefusedBeforeAnyWork) {
   // --plot equal to --out
   const std::string csv = scratch / "s.csv";
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"spectrum", "--wavelengths", "550", "--rays", "10", "--out", csv, "--plot", csv},
-        std::vector<std::string>{"brdf", "--wavelengths", "550", "--rays", "10", "--out", csv, "--plot", csv},
-        std::vector<std::string>{"coefficients", "--specimen", "S1", "--wavelengths", "550", "--out", csv, "--plot",
-                                 csv}}) {
+       {std::vector<std::string>{"spectrum", "--wavelengths", "550", "--rays", "10", "--out", csv,
+                                 "--plot", csv},
+        std::vector<std::string>{"brdf", "--wavelengths", "550", "--rays", "10", "--out", csv,
+                                 "--plot", csv},
+        std::vector<std::string>{"coefficients", "--specimen", "S1", "--wavelengths", "550",
+                                 "--out", csv, "--plot", csv}}) {
     EXPECT_NE(errorOf(args).find("same file"), std::string::npos) << args[0];
     EXPECT_FALSE(fs::exists(csv)) << args[0];
   }
   // fit --specimen S.toml --out S.toml: the fitted specimen over its start
-  EXPECT_NE(errorOf({"fit", "--specimen", specimen, "--measured",
-                     (kSource / "tests/data/validation/ncsu_vrhel1994_skin.csv").string() + ":obj117", "--out",
-                     specimen})
-                .find("input"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf({"fit", "--specimen", specimen, "--measured",
+               (kSource / "tests/data/validation/ncsu_vrhel1994_skin.csv").string() + ":obj117",
+               "--out", specimen})
+          .find("input"),
+      std::string::npos);
   EXPECT_EQ(readAll(specimen), specimenText);
   // figure a/x.toml b/x.toml: two renders into one DIR/x.exr
   fs::create_directories(scratch.path / "a");
   fs::create_directories(scratch.path / "b");
   fs::copy_file(kScene, scratch.path / "a/x.toml");
   fs::copy_file(kScene, scratch.path / "b/x.toml");
-  const std::string error =
-      errorOf({"figure", scratch / "a/x.toml", scratch / "b/x.toml", "--out", scratch / "fig", "--spp", "1"});
+  const std::string error = errorOf({"figure", scratch / "a/x.toml", scratch / "b/x.toml", "--out",
+                                     scratch / "fig", "--spp", "1"});
   EXPECT_NE(error.find("would both be written"), std::string::npos) << error;
   EXPECT_FALSE(fs::exists(scratch.path / "fig" / "x.exr"));
 }
@@ -253,7 +278,8 @@ TEST(HostileUse, Row7AnOutputThatCannotBeWrittenFailsAtOnceWithAClearMessage) {
   if (::geteuid() != 0) {  // root writes anywhere
     fs::create_directories(scratch.path / "readonly");
     fs::permissions(scratch.path / "readonly", fs::perms::owner_read | fs::perms::owner_exec);
-    const std::string error = errorOf({"render", kScene, "--out", scratch / "readonly/x.exr", "--spp", "1"});
+    const std::string error =
+        errorOf({"render", kScene, "--out", scratch / "readonly/x.exr", "--spp", "1"});
     EXPECT_NE(error.find("cannot write in its folder"), std::string::npos) << error;
   }
 }
@@ -271,7 +297,8 @@ TEST(HostileUse, Row8ResolutionHasTheSceneFilesLimitsAndSaysWhichIsExceeded) {
       EXPECT_NE(std::string(e.what()).find("limit"), std::string::npos) << e.what();
     }
   }
-  for (const std::string text : {"0x5", "-1x5", "5x", "x5", "5x5x5", "1e3x2"}) EXPECT_THROW(parseResolution(text), std::invalid_argument) << text;
+  for (const std::string text : {"0x5", "-1x5", "5x", "x5", "5x5x5", "1e3x2"})
+    EXPECT_THROW(parseResolution(text), std::invalid_argument) << text;
 }
 
 TEST(HostileUse, Row8ARenderThatWouldNotFitInMemoryIsRefusedUpFront) {
@@ -288,7 +315,9 @@ TEST(HostileUse, Row8ARenderThatWouldNotFitInMemoryIsRefusedUpFront) {
 TEST(HostileUse, Row10WavelengthsAreWrittenWithEveryDigitTheyHave) {
   const Scratch scratch("row10");
   const std::string out = scratch / "s.csv";
-  ASSERT_EQ(errorOf({"spectrum", "--wavelengths", "550.0001,550.0002,1234.5678", "--rays", "20", "--out", out}), "");
+  ASSERT_EQ(errorOf({"spectrum", "--wavelengths", "550.0001,550.0002,1234.5678", "--rays", "20",
+                     "--out", out}),
+            "");
   std::istringstream csv(readAll(out));
   std::string line;
   std::getline(csv, line);
@@ -307,8 +336,8 @@ TEST(HostileUse, Row10WavelengthsAreWrittenWithEveryDigitTheyHave) {
 
 TEST(HostileUse, Row11ASpecimenFolderIsCalledAFolder) {
   const Scratch scratch("row11");
-  const std::string error =
-      errorOf({"spectrum", "--specimen", scratch.path.string() + "/", "--wavelengths", "550", "--out", scratch / "s.csv"});
+  const std::string error = errorOf({"spectrum", "--specimen", scratch.path.string() + "/",
+                                     "--wavelengths", "550", "--out", scratch / "s.csv"});
   EXPECT_NE(error.find("is a folder"), std::string::npos) << error;
 }
 

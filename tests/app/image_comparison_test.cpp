@@ -1,10 +1,7 @@
-// Image comparison (renderer/image/image_comparison.h) and `hylios image-diff`: relative RMSE, relative
-// bias and block means on small hand-computed EXRs; clear errors for mismatched images.
-#include "renderer/image/image_comparison.h"
-
-#include <gtest/gtest.h>
-
+// Image comparison (renderer/image/image_comparison.h) and `hylios image-diff`: relative RMSE,
+// relative bias and block means on small hand-computed EXRs; clear errors for mismatched images.
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
@@ -14,6 +11,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "renderer/image/image_comparison.h"
 #include "tests/support/scratch_csv.h"
 
 namespace {
@@ -41,7 +39,8 @@ ExrImage makeImage(int width, int height, const std::vector<std::string>& names,
 void writeExr(const ExrImage& image, const fs::path& path) {
   auto out = OIIO::ImageOutput::create("openexr");
   ASSERT_TRUE(out);
-  OIIO::ImageSpec spec(image.width, image.height, static_cast<int>(image.channelNames.size()), OIIO::TypeDesc::FLOAT);
+  OIIO::ImageSpec spec(image.width, image.height, static_cast<int>(image.channelNames.size()),
+                       OIIO::TypeDesc::FLOAT);
   spec.channelnames = image.channelNames;
   ASSERT_TRUE(out->open(path.string(), spec)) << out->geterror();
   ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data())) << out->geterror();
@@ -53,8 +52,12 @@ void writeExr(const ExrImage& image, const fs::path& path) {
 // relative 0.25, bias +0.25. R: reference 1, test 0: relative 1, bias -1 (not in "overall").
 // Overall over 500 and 600 nm: RMSE = sqrt(6/8), mean |b| = 24/8 = 3, relative 0.288675, bias
 // (4/8)/3 = 0.166667.
-ExrImage referenceTwoByTwo() { return makeImage(2, 2, {k500, k600, "R"}, {{1, 2, 3, 2}, {4, 4, 4, 4}, {1, 1, 1, 1}}); }
-ExrImage testTwoByTwo() { return makeImage(2, 2, {k500, k600, "R"}, {{2, 2, 3, 1}, {5, 5, 5, 5}, {0, 0, 0, 0}}); }
+ExrImage referenceTwoByTwo() {
+  return makeImage(2, 2, {k500, k600, "R"}, {{1, 2, 3, 2}, {4, 4, 4, 4}, {1, 1, 1, 1}});
+}
+ExrImage testTwoByTwo() {
+  return makeImage(2, 2, {k500, k600, "R"}, {{2, 2, 3, 1}, {5, 5, 5, 5}, {0, 0, 0, 0}});
+}
 
 TEST(ImageComparison, RelativeRmseAndBiasPerChannelAndPooledOverSpectralChannels) {
   const auto result = hylios::compareImages(testTwoByTwo(), "test", referenceTwoByTwo(), "ref", 1);
@@ -132,19 +135,25 @@ TEST(ImageComparison, MismatchedImagesAreClearErrors) {
     hylios::compareImages(small, "a.exr", referenceTwoByTwo(), "b.exr", 1);
     FAIL() << "size mismatch accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("'a.exr' is 1x2, 'b.exr' is 2x2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'a.exr' is 1x2, 'b.exr' is 2x2"), std::string::npos)
+        << e.what();
   }
-  const ExrImage other = makeImage(2, 2, {k500, "S0.700,000000nm", "R"}, {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}});
+  const ExrImage other =
+      makeImage(2, 2, {k500, "S0.700,000000nm", "R"}, {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}});
   try {
     hylios::compareImages(other, "a.exr", referenceTwoByTwo(), "b.exr", 1);
     FAIL() << "channel mismatch accepted";
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("'a.exr' has S0.700,000000nm which 'b.exr' lacks"), std::string::npos) << message;
-    EXPECT_NE(message.find("'b.exr' has S0.600,000000nm which 'a.exr' lacks"), std::string::npos) << message;
+    EXPECT_NE(message.find("'a.exr' has S0.700,000000nm which 'b.exr' lacks"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("'b.exr' has S0.600,000000nm which 'a.exr' lacks"), std::string::npos)
+        << message;
   }
-  EXPECT_THROW(hylios::compareImages(testTwoByTwo(), "a", referenceTwoByTwo(), "b", 3), std::invalid_argument);
-  EXPECT_THROW(hylios::compareImages(testTwoByTwo(), "a", referenceTwoByTwo(), "b", 0), std::invalid_argument);
+  EXPECT_THROW(hylios::compareImages(testTwoByTwo(), "a", referenceTwoByTwo(), "b", 3),
+               std::invalid_argument);
+  EXPECT_THROW(hylios::compareImages(testTwoByTwo(), "a", referenceTwoByTwo(), "b", 0),
+               std::invalid_argument);
 }
 
 TEST(ImageComparison, ZeroReferenceChannelIsAnErrorNamingIt) {
@@ -154,7 +163,8 @@ TEST(ImageComparison, ZeroReferenceChannelIsAnErrorNamingIt) {
     hylios::compareImages(test, "t", reference, "ref.exr", 1);
     FAIL() << "zero reference accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("'ref.exr': channel " + k600 + " is zero everywhere"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("'ref.exr': channel " + k600 + " is zero everywhere"),
+              std::string::npos)
         << e.what();
   }
 }
@@ -169,7 +179,8 @@ TEST(ImageComparison, ReadsExrFilesAndRejectsUnreadableOrNonFiniteOnes) {
   EXPECT_EQ(read.channelNames, (std::vector<std::string>{"R", k500, k600}));
   EXPECT_EQ(read.value(1, 1, 1), 2.0f);  // 500 nm at (1, 1)
   EXPECT_EQ(read.value(0, 1, 2), 4.0f);  // 600 nm at (0, 1)
-  const auto result = hylios::compareImageFiles(scratch.path / "test.exr", scratch.path / "ref.exr", 1);
+  const auto result =
+      hylios::compareImageFiles(scratch.path / "test.exr", scratch.path / "ref.exr", 1);
   EXPECT_NEAR(result.overall.relativeRmse, std::sqrt(0.75) / 3, 1e-7);
   try {
     hylios::readExrImage(scratch.path / "missing.exr");
@@ -184,7 +195,8 @@ TEST(ImageComparison, ReadsExrFilesAndRejectsUnreadableOrNonFiniteOnes) {
     hylios::readExrImage(scratch.path / "nan.exr");
     FAIL() << "NaN accepted";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("pixel (1, 0), channel " + k600), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pixel (1, 0), channel " + k600), std::string::npos)
+        << e.what();
   }
 }
 
@@ -223,8 +235,9 @@ TEST(ImageDiffCommand, MismatchedFilesFailAndWriteNothing) {
   writeExr(makeImage(1, 1, {k500, k600, "R"}, {{1}, {1}, {1}}), scratch.path / "small.exr");
   const fs::path csv = scratch.path / "diff.csv";
   EXPECT_THROW(hylios::test::runCommandLine(hylios::registerImageDiffCommand,
-                                            "image-diff " + (scratch.path / "test.exr").string() + " " +
-                                                (scratch.path / "small.exr").string() + " --csv " + csv.string()),
+                                            "image-diff " + (scratch.path / "test.exr").string() +
+                                                " " + (scratch.path / "small.exr").string() +
+                                                " --csv " + csv.string()),
                std::invalid_argument);
   EXPECT_FALSE(fs::exists(csv));
 }

@@ -1,14 +1,13 @@
 // InterruptSignalScope: SIGINT/SIGTERM are recorded instead of terminating; the first signal is
 // kept; a second signal of the same kind would take the default action (SA_RESETHAND); the
 // previous handlers come back when the scope ends; one scope at a time.
-#include "app/interrupt_signal.h"
-
 #include <gtest/gtest.h>
 
 #include <csignal>
 #include <stdexcept>
 #include <string>
 
+#include "app/interrupt_signal.h"
 #include "renderer/tracing/exit_table_cache.h"
 
 using hylios::InterruptSignalScope;
@@ -76,7 +75,8 @@ TEST(InterruptSignalScope, SaysAtOnceWhatItFinishesBeforeStopping) {
     ASSERT_EQ(std::raise(SIGINT), 0);
   }
   const std::string duringBuild = testing::internal::GetCapturedStderr();
-  EXPECT_NE(duringBuild.find("SIGINT received; finishing the exit table being built"), std::string::npos)
+  EXPECT_NE(duringBuild.find("SIGINT received; finishing the exit table being built"),
+            std::string::npos)
       << duringBuild;
   testing::internal::CaptureStderr();
   {
@@ -84,6 +84,7 @@ TEST(InterruptSignalScope, SaysAtOnceWhatItFinishesBeforeStopping) {
     ASSERT_EQ(std::raise(SIGTERM), 0);
   }
   const std::string otherwise = testing::internal::GetCapturedStderr();
-  EXPECT_NE(otherwise.find("SIGTERM received; stopping after the current sample pass"), std::string::npos)
+  EXPECT_NE(otherwise.find("SIGTERM received; stopping after the current sample pass"),
+            std::string::npos)
       << otherwise;
 }

@@ -1,5 +1,3 @@
-#include "app/measured_spectrum.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,8 +5,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/measured_spectrum.h"
+
 namespace {
-const std::string kNcsu = std::string(HYLIOS_SOURCE_DIR) + "/tests/data/validation/ncsu_vrhel1994_skin.csv";
+const std::string kNcsu =
+    std::string(HYLIOS_SOURCE_DIR) + "/tests/data/validation/ncsu_vrhel1994_skin.csv";
 
 void expectError(const std::string& spec, const std::string& fragment) {
   try {
@@ -25,14 +26,15 @@ TEST(MeasuredSpectrum, LoadsNcsuObjectByPrefix) {
   EXPECT_EQ(s.label, "obj113 skin -- caucasian");
   EXPECT_DOUBLE_EQ(s.wavelengthNm.front(), 390.0);
   EXPECT_DOUBLE_EQ(s.wavelengthNm.back(), 730.0);
-  EXPECT_DOUBLE_EQ(s.at(390.0), 0.1116);                 // first data row of obj113
+  EXPECT_DOUBLE_EQ(s.at(390.0), 0.1116);                     // first data row of obj113
   EXPECT_NEAR(s.at(391.0), 0.5 * (0.1116 + 0.1125), 1e-12);  // halfway to the 392 nm row
 }
 
 TEST(MeasuredSpectrum, RmsDifferenceOverCoveredWavelengths) {
   const auto s = hylios::loadMeasuredSpectrum(kNcsu + ":obj113");
   std::size_t compared = 0;
-  const double rms = hylios::rmsDifference({380, 390, 392}, {0.0, 0.1116 + 0.01, 0.1125 - 0.02}, s, &compared);
+  const double rms =
+      hylios::rmsDifference({380, 390, 392}, {0.0, 0.1116 + 0.01, 0.1125 - 0.02}, s, &compared);
   EXPECT_EQ(compared, 2u);  // 380 nm is outside the measurement
   EXPECT_NEAR(rms, std::sqrt((0.01 * 0.01 + 0.02 * 0.02) / 2), 1e-12);
 }
@@ -57,7 +59,8 @@ TEST(MeasuredSpectrum, ParsesFromAStreamWithTheGivenName) {
     hylios::parseMeasuredSpectrum(bad, "r", "inline.csv");
     FAIL() << "repeated wavelength accepted";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("inline.csv:3: wavelengths must ascend"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("inline.csv:3: wavelengths must ascend"),
+              std::string::npos)
         << e.what();
   }
 }

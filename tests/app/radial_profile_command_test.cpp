@@ -5,13 +5,13 @@
 #include <cmath>
 #include <string>
 
-#include "app/estimator_option.h"
 #include "app/commands.h"
+#include "app/estimator_option.h"
 #include "renderer/scene/data_paths.h"
-#include "tests/support/scratch_csv.h"
+#include "skin/core/constants.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
-#include "skin/core/constants.h"
+#include "tests/support/scratch_csv.h"
 
 using hylios::kPi;
 
@@ -30,8 +30,9 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
   ScratchFolder scratch("radial-profile-test");
   const auto csv = scratch.path / "radial.csv";
   const auto png = scratch.path / "radial.png";
-  runProfile("--specimen S1 --wavelength 550 --rays 3000 --seed 2 --max-radius-cm 2 --bins 20 --out " + csv.string() +
-             " --plot " + png.string());
+  runProfile(
+      "--specimen S1 --wavelength 550 --rays 3000 --seed 2 --max-radius-cm 2 --bins 20 --out " +
+      csv.string() + " --plot " + png.string());
   const auto rows = readCsv(csv);
   ASSERT_EQ(rows.size(), 1u + 20);
   const auto& header = rows[0];
@@ -45,7 +46,8 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
     const double inner = std::stod(rows[r][0]), outer = std::stod(rows[r][1]);
     EXPECT_NEAR(inner, 0.1 * static_cast<double>(r - 1), 1e-9);
     EXPECT_NEAR(std::stod(rows[r][2]), kPi * (outer * outer - inner * inner), 1e-5 * outer * outer);
-    subsurface += std::stod(rows[r][columnOf(header, "reflectance_per_cm2")]) * std::stod(rows[r][2]);
+    subsurface +=
+        std::stod(rows[r][columnOf(header, "reflectance_per_cm2")]) * std::stod(rows[r][2]);
   }
   const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -53,7 +55,8 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
   run.rays = 3000;
   run.seed = 2;
   const skin::SkinTally tally =
-      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run).front();
+      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run)
+          .front();
   // Exits beyond 2 cm from the entry point are rare but possible: the annuli hold at most R_d.
   EXPECT_LE(subsurface, tally.subsurfaceReflectance().mean + 1e-5);
   EXPECT_GT(subsurface, tally.subsurfaceReflectance().mean - 0.01);
@@ -67,7 +70,8 @@ TEST(RadialProfileCommand, BadArgumentsAreClearErrors) {
   EXPECT_THROW(runProfile("--max-radius-cm -1 --out " + csv.string()), CLI::ValidationError);
   EXPECT_THROW(runProfile("--angle 95 --out " + csv.string()), CLI::ValidationError);
   EXPECT_THROW(runProfile("--rays 10"), CLI::RequiredError);
-  test::expectThrowMentioning([&] { runProfile("--specimen S9 --rays 10 --out " + csv.string()); }, "S9");
+  test::expectThrowMentioning([&] { runProfile("--specimen S9 --rays 10 --out " + csv.string()); },
+                              "S9");
   EXPECT_FALSE(std::filesystem::exists(csv));
 }
 

@@ -5,16 +5,16 @@
 // render (other thread count) and removes the checkpoint.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
-#include <poll.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <poll.h>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -38,7 +38,8 @@ std::string readBytes(const fs::path& path) {
 ChildResult runHylios(const std::vector<std::string>& args, int signal = 0) {
   const fs::path binary = fs::path(HYLIOS_BINARY_DIR) / "hylios";
   // Per test process: CTest runs the tests of this file in parallel.
-  const fs::path errFile = fs::temp_directory_path() / ("hylios-render-interrupt-" + std::to_string(::getpid()) + ".err");
+  const fs::path errFile = fs::temp_directory_path() /
+                           ("hylios-render-interrupt-" + std::to_string(::getpid()) + ".err");
   int pipeFds[2];
   if (::pipe(pipeFds) != 0) throw std::runtime_error("pipe failed");
   const pid_t pid = ::fork();
@@ -109,11 +110,14 @@ TEST(RenderInterrupt, SignalsSaveACheckpointAndResumeGivesTheUninterruptedImage)
   const fs::path folder = fs::path(HYLIOS_BINARY_DIR) / "render_interrupt_test";
   fs::remove_all(folder);
   fs::create_directories(folder);
-  ASSERT_TRUE(fs::exists(fs::path(HYLIOS_BINARY_DIR) / "hylios")) << "build the hylios target first";
-  const std::string scene = (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
+  ASSERT_TRUE(fs::exists(fs::path(HYLIOS_BINARY_DIR) / "hylios"))
+      << "build the hylios target first";
+  const std::string scene =
+      (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
   // ~0.5 s of rendering on two cores; the first pass (1 spp) is reported after ~1/64 of it, so the
   // signal arrives long before the end.
-  const std::vector<std::string> common = {"render", scene, "--spp", "64", "--resolution", "64x64", "--seed", "5"};
+  const std::vector<std::string> common = {"render",       scene,   "--spp",  "64",
+                                           "--resolution", "64x64", "--seed", "5"};
   auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> args = common;
     args.insert(args.end(), extra.begin(), extra.end());
@@ -136,13 +140,14 @@ TEST(RenderInterrupt, SignalsSaveACheckpointAndResumeGivesTheUninterruptedImage)
   // 2. A foreign checkpoint (another seed, other options) and a damaged one are refused; nothing
   //    is overwritten.
   const std::string exrBytes = readBytes(out), stateBytes = readBytes(state);
-  const ChildResult foreign = runHylios({"render", scene, "--spp", "64", "--resolution", "64x64", "--seed", "6",
-                                         "--out", out, "--resume"});
+  const ChildResult foreign = runHylios({"render", scene, "--spp", "64", "--resolution", "64x64",
+                                         "--seed", "6", "--out", out, "--resume"});
   EXPECT_EQ(foreign.exitStatus, 1);
   EXPECT_NE(foreign.err.find("seed: checkpoint 5, this run 6"), std::string::npos) << foreign.err;
   const ChildResult otherOptions = runHylios(with({"--out", out, "--resume", "--epsilon", "0.01"}));
   EXPECT_EQ(otherOptions.exitStatus, 1);
-  EXPECT_NE(otherOptions.err.find("options: checkpoint '', this run '--epsilon=0.01'"), std::string::npos)
+  EXPECT_NE(otherOptions.err.find("options: checkpoint '', this run '--epsilon=0.01'"),
+            std::string::npos)
       << otherOptions.err;
   std::string damaged = stateBytes;
   damaged[damaged.size() / 2] = static_cast<char>(damaged[damaged.size() / 2] ^ 1);
@@ -175,7 +180,8 @@ TEST(RenderInterrupt, SignalsSaveACheckpointAndResumeGivesTheUninterruptedImage)
   EXPECT_EQ(resumed.channels, reference.channels);
   ASSERT_EQ(resumed.pixels.size(), reference.pixels.size());
   std::size_t differing = 0;
-  for (std::size_t i = 0; i < resumed.pixels.size(); ++i) differing += resumed.pixels[i] != reference.pixels[i];
+  for (std::size_t i = 0; i < resumed.pixels.size(); ++i)
+    differing += resumed.pixels[i] != reference.pixels[i];
   EXPECT_EQ(differing, 0u) << "of " << resumed.pixels.size() << " values";
 }
 
@@ -185,14 +191,16 @@ TEST(RenderInterrupt, RerunningWithoutResumeKeepsTheCheckpointAndSaysHowToGoOn) 
   const fs::path folder = fs::path(HYLIOS_BINARY_DIR) / "render_interrupt_keep_test";
   fs::remove_all(folder);
   fs::create_directories(folder);
-  ASSERT_TRUE(fs::exists(fs::path(HYLIOS_BINARY_DIR) / "hylios")) << "build the hylios target first";
-  const std::string scene = (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
+  ASSERT_TRUE(fs::exists(fs::path(HYLIOS_BINARY_DIR) / "hylios"))
+      << "build the hylios target first";
+  const std::string scene =
+      (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
   const std::string out = (folder / "kept.exr").string();
   const fs::path state = out + ".hylios-state";
   fs::remove(out);
   fs::remove(state);
-  const std::vector<std::string> args = {"render", scene, "--spp", "64", "--resolution", "64x64", "--seed", "5",
-                                         "--out", out, "--threads", "2"};
+  const std::vector<std::string> args = {"render", scene, "--spp", "64", "--resolution", "64x64",
+                                         "--seed", "5",   "--out", out,  "--threads",    "2"};
   const ChildResult interrupted = runHylios(args, SIGINT);
   ASSERT_EQ(interrupted.exitStatus, 130) << interrupted.out << interrupted.err;
   ASSERT_TRUE(fs::exists(state));

@@ -38,7 +38,8 @@ Estimate reflectance(const std::string& specimenName, double wavelengthNm, doubl
 /// RMS difference of the modelled curve (400–700 nm, 10 nm, 45°) to an NCSU object, with the
 /// largest Monte Carlo standard error of the modelled points.
 double ncsuRms(const std::string& specimen, const std::string& object, double* worstSigma) {
-  const auto measured = hylios::loadMeasuredSpectrum(kRoot + "/tests/data/validation/ncsu_vrhel1994_skin.csv:" + object);
+  const auto measured = hylios::loadMeasuredSpectrum(
+      kRoot + "/tests/data/validation/ncsu_vrhel1994_skin.csv:" + object);
   std::vector<double> wavelengths, model;
   *worstSigma = 0;
   for (double w = 400; w <= 700; w += 10) {
@@ -89,7 +90,8 @@ TEST(SkinValidation, S3ShowsWaterAndHemoglobinFeatures) {
   expectBelow(r420, r440, "Soret band at 420 nm");
   // The 577 nm band sits on the steep rise towards 600 nm: its dip below 560 nm is only ≈ 0.005,
   // so those two wavelengths get 10⁶ rays each (σ_diff ≈ 0.00065).
-  const Estimate r542 = r(542, 200000), r560 = r(560, 1000000), r577 = r(577, 1000000), r600 = r(600, 50000);
+  const Estimate r542 = r(542, 200000), r560 = r(560, 1000000), r577 = r(577, 1000000),
+                 r600 = r(600, 50000);
   expectBelow(r542, r560, "HbO2 band at 542 nm");
   expectBelow(r577, r560, "HbO2 band at 577 nm");
   expectBelow(r577, r600, "HbO2 band at 577 nm (red side)");

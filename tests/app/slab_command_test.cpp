@@ -35,9 +35,10 @@ void runCommand(std::vector<std::string> args) {
 TEST(SlabCommandTest, WritesOneRowMatchingTheLibrary) {
   const std::filesystem::path out =
       std::filesystem::path(HYLIOS_BINARY_DIR) / "slab_command_test_out.csv";
-  runCommand({"slab", "--above", "1.0", "--below", "1.0", "--layer", "n=1.37,mua=1,mus=100,g=0.9,d=0.1",
-              "--layer", "n=1.4,mua=2,mus=10,g=0.7,d=inf", "--rays", "5000", "--angle", "30",
-              "--seed", "9", "--threads", "2", "--out", out.string()});
+  runCommand({"slab", "--above", "1.0", "--below", "1.0", "--layer",
+              "n=1.37,mua=1,mus=100,g=0.9,d=0.1", "--layer", "n=1.4,mua=2,mus=10,g=0.7,d=inf",
+              "--rays", "5000", "--angle", "30", "--seed", "9", "--threads", "2", "--out",
+              out.string()});
   std::ifstream in(out);
   std::string header, row, extra;
   ASSERT_TRUE(std::getline(in, header));
@@ -52,19 +53,26 @@ TEST(SlabCommandTest, WritesOneRowMatchingTheLibrary) {
   ASSERT_EQ(fields.size(), 12u);
 
   skin::SlabProblem problem;
-  problem.layers = {{1.37, 1, 100, 0.9, 0.1}, {1.4, 2, 10, 0.7, std::numeric_limits<double>::infinity()}};
+  problem.layers = {{1.37, 1, 100, 0.9, 0.1},
+                    {1.4, 2, 10, 0.7, std::numeric_limits<double>::infinity()}};
   problem.incidenceAngleDeg = 30;
   skin::SlabRunOptions options;
   options.photons = 5000;
   options.seed = 9;
   options.scheme = skin::AbsorptionScheme::WeightWithRoulette;  // the command's default
   const skin::SlabResult r = skin::simulateLayeredSlab(problem, options);
-  const double expected[] = {r.specularReflectance, r.diffuseReflectance.mean,
-                             r.diffuseReflectance.standardError, r.transmittance.mean,
-                             r.transmittance.standardError, r.unscatteredTransmittance.mean,
-                             r.absorptance.mean, r.absorptance.standardError,
-                             r.layerAbsorptance[0].mean, r.layerAbsorptance[0].standardError,
-                             r.layerAbsorptance[1].mean, r.layerAbsorptance[1].standardError};
+  const double expected[] = {r.specularReflectance,
+                             r.diffuseReflectance.mean,
+                             r.diffuseReflectance.standardError,
+                             r.transmittance.mean,
+                             r.transmittance.standardError,
+                             r.unscatteredTransmittance.mean,
+                             r.absorptance.mean,
+                             r.absorptance.standardError,
+                             r.layerAbsorptance[0].mean,
+                             r.layerAbsorptance[0].standardError,
+                             r.layerAbsorptance[1].mean,
+                             r.layerAbsorptance[1].standardError};
   for (std::size_t i = 0; i < fields.size(); ++i)  // printed with 9 significant digits
     EXPECT_NEAR(std::stod(fields[i]), expected[i], 1e-8 * std::fabs(expected[i]) + 1e-15) << i;
   EXPECT_EQ(r.transmittance.mean, 0.0);  // semi-infinite bottom
@@ -76,7 +84,8 @@ TEST(SlabCommandTest, BadLayerIsAnErrorAndWritesNothing) {
       std::filesystem::path(HYLIOS_BINARY_DIR) / "slab_command_test_bad.csv";
   std::filesystem::remove(out);
   try {
-    runCommand({"slab", "--layer", "n=1.37,mua=1,mus=100,g=0.9,thickness=2", "--out", out.string()});
+    runCommand(
+        {"slab", "--layer", "n=1.37,mua=1,mus=100,g=0.9,thickness=2", "--out", out.string()});
     FAIL() << "accepted a bad --layer";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("unknown key 'thickness'"), std::string::npos) << e.what();

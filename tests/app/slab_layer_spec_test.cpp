@@ -1,10 +1,10 @@
 // `--layer key=value,...` parsing for `hylios slab`: values, infinity, and an error per bad token.
-#include "app/slab_layer_spec.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+
+#include "app/slab_layer_spec.h"
 
 namespace hylios {
 namespace {
@@ -32,7 +32,8 @@ TEST(SlabLayerSpecTest, ParsesAllKeysInAnyOrder) {
 
 TEST(SlabLayerSpecTest, ErrorsNameTheOffendingToken) {
   EXPECT_NE(errorOf("n=1.37,mua=1,mus=100,g=0.9").find("missing key 'd'"), std::string::npos);
-  EXPECT_NE(errorOf("n=1.37,mua=1,mus=100,g=0.9,d=1,k=2").find("unknown key 'k'"), std::string::npos);
+  EXPECT_NE(errorOf("n=1.37,mua=1,mus=100,g=0.9,d=1,k=2").find("unknown key 'k'"),
+            std::string::npos);
   EXPECT_NE(errorOf("n=1.37,mua=-1,mus=100,g=0.9,d=1").find("'mua' must be >= 0, got -1"),
             std::string::npos);
   EXPECT_NE(errorOf("n=1.37,mua=1,mus=nan,g=0.9,d=1").find("'mus=nan' is NaN"), std::string::npos);
@@ -41,7 +42,8 @@ TEST(SlabLayerSpecTest, ErrorsNameTheOffendingToken) {
   EXPECT_NE(errorOf("n=1.37,mua=1,mus=1,g=0.9,d=").find("'d' has no value"), std::string::npos);
   EXPECT_NE(errorOf("n=1.37,mua=inf,mus=1,g=0.9,d=1").find("infinite"), std::string::npos);
   EXPECT_NE(errorOf("n=1.37,mua=1,mus=1,g=0.9,d=-inf").find("infinite"), std::string::npos);
-  EXPECT_NE(errorOf("n=1.37,n=1.4,mua=1,mus=1,g=0.9,d=1").find("'n' given twice"), std::string::npos);
+  EXPECT_NE(errorOf("n=1.37,n=1.4,mua=1,mus=1,g=0.9,d=1").find("'n' given twice"),
+            std::string::npos);
   EXPECT_NE(errorOf("n=0,mua=1,mus=1,g=0,d=1").find("'n' must be > 0"), std::string::npos);
   EXPECT_NE(errorOf("n=1,mua=1,mus=1,g=1,d=1").find("'g' must be in (-1, 1)"), std::string::npos);
   EXPECT_NE(errorOf("n=1,mua=1,mus=1,g=0,d=1,oops").find("token 'oops'"), std::string::npos);

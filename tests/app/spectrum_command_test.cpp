@@ -34,8 +34,9 @@ std::string readAll(const fs::path& path) {
 TEST(SpectrumCommand, SameSeedGivesByteIdenticalCsvAtAnyThreadCount) {
   const fs::path one = fs::path(HYLIOS_BINARY_DIR) / "spectrum_test_1thread.csv";
   const fs::path two = fs::path(HYLIOS_BINARY_DIR) / "spectrum_test_2threads.csv";
-  const std::vector<std::string> common{"--specimen", "S2", "--angle", "45", "--wavelengths", "365,550,1450",
-                                        "--rays", "3000", "--seed", "5"};
+  const std::vector<std::string> common{
+      "--specimen",   "S2",     "--angle", "45",     "--wavelengths",
+      "365,550,1450", "--rays", "3000",    "--seed", "5"};
   auto with = [&](const std::string& threads, const fs::path& out) {
     auto args = common;
     args.insert(args.end(), {"--threads", threads, "--out", out.string()});
@@ -61,7 +62,8 @@ TEST(SpectrumCommand, BadArgumentsAreClearErrorsAndWriteNothing) {
   const fs::path out = fs::path(HYLIOS_BINARY_DIR) / "spectrum_test_bad.csv";
   fs::remove(out);
   try {
-    runSpectrum({"--specimen", "S1", "--wavelengths", "200", "--rays", "10", "--out", out.string()});
+    runSpectrum(
+        {"--specimen", "S1", "--wavelengths", "200", "--rays", "10", "--out", out.string()});
     FAIL() << "200 nm accepted";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("200 nm is outside"), std::string::npos) << e.what();

@@ -6,8 +6,6 @@
 // RMS(m1 − m2) (triangle inequality), whose expectation is ≤ sqrt(noise1² + noise2²) with noise
 // the per-curve sqrt(mean σ²). We allow 4× that. The mean error's σ is at most the same noise
 // (the spectral walk's wavelengths share paths, so their errors may be fully correlated).
-#include "app/validation_report.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,14 +14,15 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/validation_report.h"
 #include "tests/support/scratch_csv.h"
 #include "tests/support/test_spectra.h"
 
 namespace hylios {
 namespace {
 
-const std::filesystem::path kNcsu =
-    std::filesystem::path(HYLIOS_SOURCE_DIR) / "tests" / "data" / "validation" / "ncsu_vrhel1994_skin.csv";
+const std::filesystem::path kNcsu = std::filesystem::path(HYLIOS_SOURCE_DIR) / "tests" / "data" /
+                                    "validation" / "ncsu_vrhel1994_skin.csv";
 
 // docs/validation.md (hylios validate --rays 100000 --seed 1): RMS, mean error, MC σ of the RMS.
 struct Reference {
@@ -40,11 +39,11 @@ TEST(ValidationReport, NcsuFiguresMatchTheCommittedReport) {
   std::vector<double> wavelengths;
   for (double w = 400; w <= 700; w += 10) wavelengths.push_back(w);
   for (const Reference& ref : kReferences) {
-    const CurveComparison c =
-        compareWithMeasured(ref.specimen, kNcsu, ref.column, wavelengths, 45, 10000, 7, test::spectra());
-    std::cout << ref.specimen << " vs " << ref.column << ": RMS " << c.rms << " (docs " << ref.rms << "), mean error "
-              << c.meanError << ", noise " << c.noiseRms << ", max " << c.maxAbsError << " at " << c.worstWavelengthNm
-              << " nm\n";
+    const CurveComparison c = compareWithMeasured(ref.specimen, kNcsu, ref.column, wavelengths, 45,
+                                                  10000, 7, test::spectra());
+    std::cout << ref.specimen << " vs " << ref.column << ": RMS " << c.rms << " (docs " << ref.rms
+              << "), mean error " << c.meanError << ", noise " << c.noiseRms << ", max "
+              << c.maxAbsError << " at " << c.worstWavelengthNm << " nm\n";
     ASSERT_EQ(c.wavelengthNm.size(), 31u);
     const double noise = std::hypot(c.noiseRms, ref.noise);
     EXPECT_NEAR(c.rms, ref.rms, 4 * noise) << ref.specimen;
@@ -55,7 +54,8 @@ TEST(ValidationReport, NcsuFiguresMatchTheCommittedReport) {
 
 TEST(ValidationReport, CommandWritesTheReportAndItsPlots) {
   test::ScratchFolder scratch("validate");
-  test::runCommandLine(registerValidateCommand, "validate --rays 1000 --out " + scratch.path.string());
+  test::runCommandLine(registerValidateCommand,
+                       "validate --rays 1000 --out " + scratch.path.string());
   std::ifstream in(scratch.path / "validation.md");
   std::stringstream text;
   text << in.rdbuf();
@@ -64,7 +64,8 @@ TEST(ValidationReport, CommandWritesTheReportAndItsPlots) {
   EXPECT_NE(md.find("| S2 vs NCSU obj113, 45° (Fig. 7) |"), std::string::npos);
   EXPECT_NE(md.find("| 8 | half width"), std::string::npos);
   EXPECT_NE(md.find("| 11 | subsurface share"), std::string::npos);
-  for (const char* png : {"fig7_ncsu.png", "fig8_forward_profile.png", "fig10_brdf.png", "fig11_uv_ir.png"}) {
+  for (const char* png :
+       {"fig7_ncsu.png", "fig8_forward_profile.png", "fig10_brdf.png", "fig11_uv_ir.png"}) {
     EXPECT_GT(std::filesystem::file_size(scratch.path / "validation" / png), 1000u) << png;
     EXPECT_NE(md.find(std::string("](validation/") + png + ")"), std::string::npos) << png;
   }

@@ -1,8 +1,8 @@
-#include "app/wavelength_list.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+
+#include "app/wavelength_list.h"
 
 using hylios::parseWavelengthList;
 

@@ -1,7 +1,5 @@
 // Colour tables: hand values from CIE 015:2018 (CMFs, D65), the D65 white point, the sRGB matrix of
 // IEC 61966-2-1, the sRGB transfer function and the colour map's endpoints.
-#include "renderer/image/colour_tables.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,13 +7,15 @@
 #include <thread>
 #include <vector>
 
+#include "renderer/image/colour_tables.h"
+
 namespace {
 
 using hylios::cie1931;
 using hylios::d65;
 
 TEST(ColourTables, Cie1931HandValues) {
-  EXPECT_DOUBLE_EQ(cie1931(555)[1], 1.0);        // ȳ peaks at 555 nm
+  EXPECT_DOUBLE_EQ(cie1931(555)[1], 1.0);         // ȳ peaks at 555 nm
   EXPECT_NEAR(cie1931(600)[0], 1.0622, 1e-9);     // x̄(600)
   EXPECT_NEAR(cie1931(450)[2], 1.77211, 1e-9);    // z̄(450)
   EXPECT_NEAR(cie1931(380)[0], 0.001368, 1e-12);  // x̄(380)
@@ -128,7 +128,8 @@ TEST(ColourTables, ConcurrentFirstUseSeesOneTable) {
   std::vector<double> seen(8, 0.0);
   std::vector<std::thread> threads;
   for (std::size_t t = 0; t < seen.size(); ++t)
-    threads.emplace_back([&seen, t] { seen[t] = cie1931(555)[1] + d65(560) + hylios::colourMap(1)[0]; });
+    threads.emplace_back(
+        [&seen, t] { seen[t] = cie1931(555)[1] + d65(560) + hylios::colourMap(1)[0]; });
   for (auto& thread : threads) thread.join();
   for (const double v : seen) EXPECT_DOUBLE_EQ(v, 1.0 + 100.0 + 0.987053);
 }

@@ -5,8 +5,6 @@
 // Monte Carlo errors: R from N rays has σ = sqrt(R(1−R)/N) (the tally's standard error); the
 // planned and the full walk draw their numbers differently, so their difference has
 // σ_diff = sqrt(σ1² + σ2²).
-#include "skin/effect_plan.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,12 +12,13 @@
 #include <vector>
 
 #include "renderer/tracing/skin_walk_cache.h"
+#include "skin/core/constants.h"
+#include "skin/effect_plan.h"
 #include "skin/melanosome_interaction.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
 #include "tests/support/test_spectra.h"
-#include "skin/core/constants.h"
 
 using hylios::kPi;
 
@@ -32,10 +31,12 @@ const std::string kRoot = HYLIOS_SOURCE_DIR;
 using hylios::test::spectra;
 
 SkinOptics specimenOptics(const std::string& name, double wavelengthNm) {
-  return computeSkinOptics(loadSpecimen(name, kRoot + "/scenes/specimens"), spectra(), wavelengthNm);
+  return computeSkinOptics(loadSpecimen(name, kRoot + "/scenes/specimens"), spectra(),
+                           wavelengthNm);
 }
 
-SkinTally run(const SkinOptics& optics, const WalkOptions& walk, std::uint64_t rays, std::uint64_t seed) {
+SkinTally run(const SkinOptics& optics, const WalkOptions& walk, std::uint64_t rays,
+              std::uint64_t seed) {
   WalkRunOptions options;
   options.rays = rays;
   options.seed = seed;
@@ -64,10 +65,12 @@ WalkOptions smoothSingleLayer() {
   return walk;
 }
 
-const PlannedEffect* find(const EffectPlan& plan, Process process, Layer layer, Absorber absorber = Absorber::Water) {
+const PlannedEffect* find(const EffectPlan& plan, Process process, Layer layer,
+                          Absorber absorber = Absorber::Water) {
   for (const PlannedEffect& e : plan.effects)
-    if (e.process == process && (process == Process::SurfaceRoughness ||
-                                 (e.layer == layer && (process != Process::Absorption || e.absorber == absorber))))
+    if (e.process == process &&
+        (process == Process::SurfaceRoughness ||
+         (e.layer == layer && (process != Process::Absorption || e.absorber == absorber))))
       return &e;
   return nullptr;
 }
@@ -89,8 +92,9 @@ bool sameOptics(const SkinOptics& a, const SkinOptics& b) {
   for (std::size_t k = 0; k < kLayerCount; ++k) {
     const LayerOptics &x = a.layers[k], &y = b.layers[k];
     if (x.muA_perCm != y.muA_perCm || x.muATotal_perCm != y.muATotal_perCm ||
-        x.muRayleigh_perCm != y.muRayleigh_perCm || x.melanosome.mu_perCm != y.melanosome.mu_perCm ||
-        x.thicknessCm != y.thicknessCm || x.refractiveIndex != y.refractiveIndex)
+        x.muRayleigh_perCm != y.muRayleigh_perCm ||
+        x.melanosome.mu_perCm != y.melanosome.mu_perCm || x.thicknessCm != y.thicknessCm ||
+        x.refractiveIndex != y.refractiveIndex)
       return false;
   }
   return true;
@@ -111,7 +115,8 @@ TEST(EffectPlan, OpticalDepthOfOneAbsorberMatchesBeerLambert) {
     ASSERT_EQ(plan.effects.size(), 1u);  // no roughness, nothing else nonzero
     const PlannedEffect& e = plan.effects.front();
     const double expected = 1 - std::exp(-mu * d / std::cos(angle * kPi / 180));
-    // μℓ is in [0, μd/cos]; its standard deviation is < 0.45 for these laws, so σ(τ) < 0.45/√4000 ≈ 0.0071.
+    // μℓ is in [0, μd/cos]; its standard deviation is < 0.45 for these laws, so σ(τ) < 0.45/√4000 ≈
+    // 0.0071.
     EXPECT_NEAR(e.opticalDepth, expected, 4 * 0.0071) << angle;
     // τ⁺ is τ + 3 s.e., capped by the bound on entering the layer (every ray enters: ≤ 1).
     EXPECT_GT(e.opticalDepthUpper, e.opticalDepth);
@@ -126,7 +131,8 @@ TEST(EffectPlan, DropsWhatFitsAndZeroesItsCoefficient) {
   const SkinOptics optics = singleAbsorbingLayer(0.05, 0.01);  // τ = 1 − e^{−5e-4} ≈ 5.0e-4
   const EffectPlan plan = planEffects(optics, 1e-3, options);
   ASSERT_EQ(plan.effects.size(), 1u);
-  // All but ~5e-4 of the rays cross the whole d, so the estimate's s.e. is ≈ 5e-4·sqrt(5e-4/2000) ≈ 2.5e-7.
+  // All but ~5e-4 of the rays cross the whole d, so the estimate's s.e. is ≈ 5e-4·sqrt(5e-4/2000)
+  // ≈ 2.5e-7.
   EXPECT_NEAR(plan.effects[0].opticalDepth, 1 - std::exp(-5e-4), 4 * 2.5e-7);
   EXPECT_FALSE(plan.effects[0].kept);
   EXPECT_EQ(plan.droppedDepthBound, plan.effects[0].opticalDepthUpper);
@@ -162,7 +168,8 @@ TEST(EffectPlan, EpsilonZeroKeepsEveryProcessAndIsBitIdentical) {
     EXPECT_EQ(plan.droppedCount(), 0u);
     EXPECT_EQ(plan.droppedDepthBound, 0.0);
     EXPECT_TRUE(sameOptics(plan.optics, optics));
-    const SkinTally full = run(optics, WalkOptions{}, 4000, 11), planned = run(plan.optics, plan.walk, 4000, 11);
+    const SkinTally full = run(optics, WalkOptions{}, 4000, 11),
+                    planned = run(plan.optics, plan.walk, 4000, 11);
     EXPECT_EQ(full.reflectance().mean, planned.reflectance().mean) << w;
     EXPECT_EQ(full.absorptance().mean, planned.absorptance().mean) << w;
     EXPECT_EQ(full.meanEvents(), planned.meanEvents()) << w;
@@ -170,9 +177,9 @@ TEST(EffectPlan, EpsilonZeroKeepsEveryProcessAndIsBitIdentical) {
 }
 
 TEST(EffectPlan, DefaultEpsilonKeepsReflectanceWithinTheBound) {
-  // S1–S4 at five wavelengths, 20,000 rays each way: σ_R ≤ sqrt(0.25/20000) = 0.0035, σ_diff ≤ 0.005;
-  // the test is |ΔR| ≤ bound + 4 σ_diff (the bound itself, ≤ 1e-3, is far below the noise: this
-  // catches a planner that drops something that matters, not errors of order ε).
+  // S1–S4 at five wavelengths, 20,000 rays each way: σ_R ≤ sqrt(0.25/20000) = 0.0035, σ_diff ≤
+  // 0.005; the test is |ΔR| ≤ bound + 4 σ_diff (the bound itself, ≤ 1e-3, is far below the noise:
+  // this catches a planner that drops something that matters, not errors of order ε).
   std::size_t droppedSomewhere = 0;
   for (const std::string name : {"S1", "S2", "S3", "S4"})
     for (double w : {300.0, 550.0, 1100.0, 1650.0, 2200.0}) {
@@ -185,7 +192,8 @@ TEST(EffectPlan, DefaultEpsilonKeepsReflectanceWithinTheBound) {
       const Estimate full = run(optics, WalkOptions{}, 20000, 21).reflectance();
       const Estimate planned = run(plan.optics, plan.walk, 20000, 22).reflectance();
       const double sigma = std::hypot(full.standardError, planned.standardError);
-      EXPECT_LE(std::fabs(planned.mean - full.mean), plan.droppedDepthBound + 4 * sigma) << name << " " << w << " nm";
+      EXPECT_LE(std::fabs(planned.mean - full.mean), plan.droppedDepthBound + 4 * sigma)
+          << name << " " << w << " nm";
     }
   EXPECT_GT(droppedSomewhere, 0u);  // the default does skip the negligible absorbers
 }
@@ -203,7 +211,8 @@ TEST(EffectPlan, DroppingAProcessOfLargeDepthChangesReflectance) {
   ASSERT_NE(rayleigh, nullptr);
   EXPECT_TRUE(rayleigh->kept);
   EXPECT_GT(rayleigh->opticalDepth, 1.0);
-  EXPECT_GT(std::fabs(full.mean - without.mean), 4 * std::hypot(full.standardError, without.standardError));
+  EXPECT_GT(std::fabs(full.mean - without.mean),
+            4 * std::hypot(full.standardError, without.standardError));
 }
 
 TEST(EffectPlan, MelanosomesWithoutScatteringAngleCountOnlyAbsorbingInteractions) {
@@ -245,10 +254,11 @@ TEST(EffectPlan, SharedPlanTakesTheLargestDepthOverOptics) {
   const EffectPlan a = planEffects(weak, 0.1, options), b = planEffects(strong, 0.1, options);
   const EffectPlan both = planEffects(std::vector<SkinOptics>{weak, strong}, 0.1, options);
   ASSERT_EQ(both.effects.size(), 1u);
-  EXPECT_EQ(both.effects[0].opticalDepth, std::max(a.effects[0].opticalDepth, b.effects[0].opticalDepth));
+  EXPECT_EQ(both.effects[0].opticalDepth,
+            std::max(a.effects[0].opticalDepth, b.effects[0].opticalDepth));
   EXPECT_EQ(both.effects[0].opticalDepthUpper,
             std::max(a.effects[0].opticalDepthUpper, b.effects[0].opticalDepthUpper));
-  EXPECT_FALSE(a.effects[0].kept);  // τ ≈ 0.01 fits in 0.1
+  EXPECT_FALSE(a.effects[0].kept);    // τ ≈ 0.01 fits in 0.1
   EXPECT_TRUE(both.effects[0].kept);  // τ ≈ 0.26 does not
   EXPECT_EQ(both.pilotRaysTraced, 1000u);
   // Applying a plan to other optics zeroes what it dropped and copies the rest bit for bit.
@@ -286,7 +296,8 @@ TEST(EffectPlan, ExplainListsEveryProcessWithItsDecision) {
   EXPECT_NE(plan.summary().find("500 nm: kept 0 of 1"), std::string::npos) << plan.summary();
   const EffectPlan s1 = planEffects(specimenOptics("S1", 550), 1e-3);
   const std::string full = s1.explain();
-  for (const char* row : {"melanosomes", "Rayleigh", "surface roughness", "absorption: oxyhemoglobin", "kept"})
+  for (const char* row :
+       {"melanosomes", "Rayleigh", "surface roughness", "absorption: oxyhemoglobin", "kept"})
     EXPECT_NE(full.find(row), std::string::npos) << row;
 }
 
@@ -313,10 +324,12 @@ TEST(EffectPlan, InvalidArgumentsThrow) {
 
 TEST(EffectPlan, RenderCacheAppliesOneChannelPlanToEveryMelaninLevel) {
   // Melanin × [1, 3] at 550 and 2200 nm, with 550 nm given twice (overlapping bands): one plan per
-  // distinct wavelength from 2 end levels × 2 incidences × kRenderPilotRays, applied at every level.
+  // distinct wavelength from 2 end levels × 2 incidences × kRenderPilotRays, applied at every
+  // level.
   const Specimen specimen = loadSpecimen("S1", kRoot + "/scenes/specimens");
   const std::vector<double> channels{550, 2200, 550};
-  const hylios::SkinWalkCache cache(specimen, 1, 3, channels, spectra(), {}, 5, kDefaultEffectTolerance);
+  const hylios::SkinWalkCache cache(specimen, 1, 3, channels, spectra(), {}, 5,
+                                    kDefaultEffectTolerance);
   ASSERT_EQ(cache.effectPlans().size(), 2u);
   for (std::size_t c = 0; c < channels.size(); ++c) {
     const EffectPlan& plan = cache.effectPlans()[c == 1 ? 1 : 0];
@@ -324,8 +337,8 @@ TEST(EffectPlan, RenderCacheAppliesOneChannelPlanToEveryMelaninLevel) {
     EXPECT_EQ(plan.pilotRaysTraced, 4 * hylios::SkinWalkCache::kRenderPilotRays);
     EXPECT_LE(plan.droppedDepthBound, kDefaultEffectTolerance);
     for (int k = 0; k < cache.levels(); ++k) {
-      const SkinOptics full =
-          computeSkinOptics(hylios::scaleMelanin(specimen, cache.levelMultiplier(k)), spectra(), channels[c]);
+      const SkinOptics full = computeSkinOptics(
+          hylios::scaleMelanin(specimen, cache.levelMultiplier(k)), spectra(), channels[c]);
       EXPECT_TRUE(sameOptics(cache.walk(c, k).optics(), plan.apply(full))) << c << " " << k;
     }
   }
@@ -339,5 +352,6 @@ TEST(EffectPlan, RenderCacheAppliesOneChannelPlanToEveryMelaninLevel) {
   EXPECT_TRUE(sameOptics(full.walk(0, 2).optics(),
                          computeSkinOptics(hylios::scaleMelanin(specimen, 3), spectra(), 550)));
   EXPECT_NE(full.explainEffectPlans().find("off"), std::string::npos);
-  EXPECT_THROW(hylios::SkinWalkCache(specimen, 1, 3, {550}, spectra(), {}, 3, 1.5), hylios::SceneError);
+  EXPECT_THROW(hylios::SkinWalkCache(specimen, 1, 3, {550}, spectra(), {}, 3, 1.5),
+               hylios::SceneError);
 }

@@ -1,7 +1,5 @@
 // OBJ loading and validation, the Embree scene (meshes, planes, analytic spheres), area sampling,
 // the camera, and Embree's fatal error callback.
-#include "renderer/tracing/embree_scene.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,10 +7,11 @@
 #include <fstream>
 #include <string>
 
-#include "renderer/tracing/camera.h"
 #include "renderer/scene/triangle_mesh.h"
-#include "skin/core/random.h"
+#include "renderer/tracing/camera.h"
+#include "renderer/tracing/embree_scene.h"
 #include "skin/core/constants.h"
+#include "skin/core/random.h"
 
 using hylios::kPi;
 
@@ -59,15 +58,16 @@ TEST(ObjMesh, NanAndInfiniteAndTextVerticesAreRejectedWithTheirLine) {
 }
 
 TEST(ObjMesh, IndicesOutOfRangeAreRejected) {
-  EXPECT_NE(sceneErrorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n").find("out of bounds"), std::string::npos);
+  EXPECT_NE(sceneErrorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n").find("out of bounds"),
+            std::string::npos);
   const std::string negative = sceneErrorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9\n");
   EXPECT_NE(negative.find("refers to vertex"), std::string::npos) << negative;
 }
 
 TEST(ObjMesh, DegenerateTrianglesAreSkippedAndCounted) {
   // Triangle 2 is collinear, triangle 3 repeats a vertex.
-  const TriangleMesh mesh = parseObjMesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 1 1 3\n",
-                                         "t.obj", kWhere, true);
+  const TriangleMesh mesh = parseObjMesh(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 1 1 3\n", "t.obj", kWhere, true);
   EXPECT_EQ(mesh.triangles.size(), 1u);
   EXPECT_EQ(mesh.skippedDegenerate, 2u);
   const std::string allBad = sceneErrorOf("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
@@ -76,8 +76,8 @@ TEST(ObjMesh, DegenerateTrianglesAreSkippedAndCounted) {
 
 TEST(ObjMesh, ComputedNormalsAreAreaWeighted) {
   // Two faces share vertex 1: one in the z = 0 plane (area 2), one in the x = 0 plane (area 0.5).
-  const TriangleMesh mesh = parseObjMesh("v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0 0 1\nv 0 1 0\nf 1 2 3\nf 1 5 4\n",
-                                         "t.obj", kWhere, true);
+  const TriangleMesh mesh = parseObjMesh(
+      "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0 0 1\nv 0 1 0\nf 1 2 3\nf 1 5 4\n", "t.obj", kWhere, true);
   ASSERT_EQ(mesh.triangles.size(), 2u);
   const glm::dvec3 n = mesh.normals[mesh.triangles[0][0]];
   // Σ cross products: (0, 0, 4) + (0.5·2·(1, 0, 0)) = (1, 0, 4) → normalised.
@@ -87,7 +87,8 @@ TEST(ObjMesh, ComputedNormalsAreAreaWeighted) {
 
 TEST(ObjMesh, ObjNormalsAndUvsAreKept) {
   const TriangleMesh mesh = parseObjMesh(
-      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nvt 0.25 0.5\nvt 1 0\nvt 0 1\nf 1/1/1 2/2/1 3/3/1\n", "t.obj", kWhere, true);
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nvt 0.25 0.5\nvt 1 0\nvt 0 1\nf 1/1/1 2/2/1 3/3/1\n",
+      "t.obj", kWhere, true);
   ASSERT_EQ(mesh.uvs.size(), 3u);
   EXPECT_EQ(mesh.uvs[0], glm::dvec2(0.25, 0.5));
   EXPECT_EQ(mesh.normals[1], glm::dvec3(0, 0, 1));
@@ -95,8 +96,8 @@ TEST(ObjMesh, ObjNormalsAndUvsAreKept) {
 
 TEST(ObjMesh, TransformUsesTheInverseTransposeForNormals) {
   TriangleMesh mesh = makePlaneMesh({0, 0, 0}, glm::normalize(glm::dvec3(1, 1, 0)), 1);
-  const glm::dmat4 stretch = glm::dmat4(glm::dvec4(2, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0),
-                                        glm::dvec4(0, 0, 0, 1));
+  const glm::dmat4 stretch = glm::dmat4(glm::dvec4(2, 0, 0, 0), glm::dvec4(0, 1, 0, 0),
+                                        glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
   transformMesh(mesh, stretch, kWhere);
   // The plane x + y = 0 becomes x/2 + y = 0, normal ∝ (1/2, 1, 0).
   const glm::dvec3 expected = glm::normalize(glm::dvec3(0.5, 1, 0));
@@ -117,7 +118,9 @@ TEST(EmbreeScene, MissingMeshFileNamesTheShape) {
   } catch (const SceneError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("scene.toml:12:3"), std::string::npos) << message;
-    EXPECT_NE(message.find("cannot open mesh file '/nonexistent/folder/head.obj'"), std::string::npos) << message;
+    EXPECT_NE(message.find("cannot open mesh file '/nonexistent/folder/head.obj'"),
+              std::string::npos)
+        << message;
   }
 }
 
@@ -175,7 +178,8 @@ TEST(EmbreeScene, SphereTransformMustBeSimilarity) {
 
 TEST(EmbreeScene, AreaSamplingIsUniformOverTriangles) {
   // Plane of side 2: the mean sample position is the centre, the mean of x² is 1/3 (uniform on
-  // [−1, 1]); N = 40000 samples, σ(mean x) = sqrt(1/3/N) ≈ 0.0029, σ(mean x²) = sqrt(4/45/N) ≈ 0.0015.
+  // [−1, 1]); N = 40000 samples, σ(mean x) = sqrt(1/3/N) ≈ 0.0029, σ(mean x²) = sqrt(4/45/N) ≈
+  // 0.0015.
   SceneDesc scene;
   ShapeDesc plane;
   plane.kind = ShapeDesc::Kind::Plane;

@@ -1,11 +1,11 @@
 // Emission spectra: Planck (Wien peak, a hand-computed value), LED Gaussian (half maximum at
 // centre ± FWHM/2), D65 (1 at 560 nm), tables (linear, refusing wavelengths outside).
-#include "renderer/scene/emission_spectrum.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+
+#include "renderer/scene/emission_spectrum.h"
 
 namespace hylios {
 namespace {

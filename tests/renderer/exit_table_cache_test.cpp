@@ -1,21 +1,20 @@
-// ExitTableCache (renderer/tracing/exit_table_cache.h): folder choice from the environment, load instead of
-// build on a second get, damaged or foreign files rebuilt, memory-only operation when the folder
-// cannot be made.
-#include "renderer/tracing/exit_table_cache.h"
-
+// ExitTableCache (renderer/tracing/exit_table_cache.h): folder choice from the environment, load
+// instead of build on a second get, damaged or foreign files rebuilt, memory-only operation when
+// the folder cannot be made.
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <atomic>
 #include <fstream>
 #include <functional>
-#include <thread>
 #include <iterator>
+#include <stdlib.h>
+#include <thread>
 
 #include "renderer/scene/data_paths.h"
+#include "renderer/tracing/exit_table_cache.h"
 #include "skin/skin_optics.h"
-#include "skin/spectral_database.h"
 #include "skin/specimen.h"
+#include "skin/spectral_database.h"
 
 using namespace hylios;
 
@@ -53,7 +52,8 @@ void put(const std::filesystem::path& p, const std::string& bytes) {
 
 TEST(ExitTableCache, FolderFromTheEnvironment) {
   const char* saved[3] = {getenv("HYLIOS_CACHE_DIR"), getenv("XDG_CACHE_HOME"), getenv("HOME")};
-  const std::string keep[3] = {saved[0] ? saved[0] : "", saved[1] ? saved[1] : "", saved[2] ? saved[2] : ""};
+  const std::string keep[3] = {saved[0] ? saved[0] : "", saved[1] ? saved[1] : "",
+                               saved[2] ? saved[2] : ""};
   setenv("HYLIOS_CACHE_DIR", "/tmp/a", 1);
   setenv("XDG_CACHE_HOME", "/tmp/b", 1);
   setenv("HOME", "/tmp/c", 1);

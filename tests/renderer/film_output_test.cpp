@@ -1,10 +1,7 @@
 // Film output: spectral channel names, the EXR (names, attributes, values, read back with
 // OpenImageIO), the PNG previews (sizes, colours), atomicity on a non-finite film, contact sheets.
-#include "renderer/image/film_output.h"
-
-#include <gtest/gtest.h>
-
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +12,7 @@
 #include <unistd.h>
 
 #include "renderer/image/colour_tables.h"
+#include "renderer/image/film_output.h"
 #include "renderer/image/preview_image.h"
 
 namespace {
@@ -103,7 +101,8 @@ ReadImage readImage(const fs::path& path) {
   if (!in) throw std::runtime_error("cannot open " + path.string() + ": " + OIIO::geterror());
   ReadImage image;
   image.spec = in->spec();
-  image.pixels.resize(static_cast<std::size_t>(image.spec.width) * image.spec.height * image.spec.nchannels);
+  image.pixels.resize(static_cast<std::size_t>(image.spec.width) * image.spec.height *
+                      image.spec.nchannels);
   if (!in->read_image(0, 0, 0, image.spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
     throw std::runtime_error("cannot read " + path.string());
   return image;
@@ -128,7 +127,8 @@ TEST(ColourBand, NormalisationMakesD65White) {
   ASSERT_TRUE(hylios::isColourBand(visible));
   EXPECT_FALSE(hylios::isColourBand(testDesc().bands[0]));
   double y = 0;
-  for (double nm = 380; nm <= 780; nm += 10) y += hylios::d65(nm) / 100 * hylios::cie1931(nm)[1] * 10;
+  for (double nm = 380; nm <= 780; nm += 10)
+    y += hylios::d65(nm) / 100 * hylios::cie1931(nm)[1] * 10;
   EXPECT_NEAR(hylios::colourBandNormalisation(visible), 1.0 / y, 1e-15);
 }
 
@@ -155,7 +155,8 @@ TEST_F(FilmOutputTest, ExrHoldsChannelsAttributesAndValues) {
     }
   }
   ASSERT_EQ(spectralIndex.size(), film.channels().size());
-  for (const auto& channel : film.channels()) EXPECT_EQ(spectralIndex.count(channel.wavelengthNm), 1u);
+  for (const auto& channel : film.channels())
+    EXPECT_EQ(spectralIndex.count(channel.wavelengthNm), 1u);
   ASSERT_EQ(rgbIndex.size(), 3u);
   ASSERT_EQ(rgbIndex.count("R") + rgbIndex.count("G") + rgbIndex.count("B"), 3u);
 
@@ -258,12 +259,13 @@ TEST_F(FilmOutputTest, ContactSheetGridAndErrors) {
   hylios::writeContactSheet(panels, {"UV 365 nm", "IR 1100 nm", "visible"}, sheet, 2);
   const ReadImage image = readImage(sheet);
   const ReadImage panel = readImage(panels[0]);
-  EXPECT_GE(image.spec.width, 2 * panel.spec.width);   // two columns of the widest panel
+  EXPECT_GE(image.spec.width, 2 * panel.spec.width);  // two columns of the widest panel
   EXPECT_LT(image.spec.width, 3 * panel.spec.width);
   EXPECT_GE(image.spec.height, 2 * panel.spec.height);  // two rows
   EXPECT_EQ(fs::exists(folder_ / "sheet.labels.txt"), !hylios::textRenderingAvailable());
 
-  EXPECT_THROW(hylios::writeContactSheet(panels, {"one"}, folder_ / "x.png", 2), std::invalid_argument);
+  EXPECT_THROW(hylios::writeContactSheet(panels, {"one"}, folder_ / "x.png", 2),
+               std::invalid_argument);
   EXPECT_THROW(hylios::writeContactSheet(panels, {"a", "b", "c"}, folder_ / "x.png", 0),
                std::invalid_argument);
   EXPECT_THROW(hylios::writeContactSheet({folder_ / "missing.png"}, {"m"}, folder_ / "x.png", 1),

@@ -1,7 +1,5 @@
 // The spectral film: channel layout, sampleChannel's distribution (band uniformly, then channel
 // uniformly — chi-square), per-channel means, and its errors.
-#include "renderer/image/film.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "renderer/image/film.h"
 #include "skin/core/random.h"
 #include "tests/support/chi2.h"
 
@@ -39,7 +38,8 @@ FilmDesc threeBandDesc(int width = 3, int height = 2) {
   FilmDesc desc;
   desc.width = width;
   desc.height = height;
-  desc.bands = {singleBand("uv365", 365), rangeBand("vis", 400, 700, 100), singleBand("ir1100", 1100)};
+  desc.bands = {singleBand("uv365", 365), rangeBand("vis", 400, 700, 100),
+                singleBand("ir1100", 1100)};
   return desc;
 }
 
@@ -60,9 +60,9 @@ TEST(Film, SampleChannelBoundaries) {
   const Film film(threeBandDesc());
   EXPECT_EQ(film.sampleChannel(0.0), 0u);
   EXPECT_EQ(film.sampleChannel(std::nextafter(1.0 / 3.0, 0.0)), 0u);
-  EXPECT_EQ(film.sampleChannel(1.0 / 3.0 + 1e-12), 1u);   // first channel of the range band
+  EXPECT_EQ(film.sampleChannel(1.0 / 3.0 + 1e-12), 1u);  // first channel of the range band
   EXPECT_EQ(film.sampleChannel(0.5), 3u);  // band ⌊1.5⌋ = 1, channel ⌊0.5·4⌋ = 2 of it → 600 nm
-  EXPECT_EQ(film.sampleChannel(2.0 / 3.0 - 1e-12), 4u);   // last channel of the range band
+  EXPECT_EQ(film.sampleChannel(2.0 / 3.0 - 1e-12), 4u);  // last channel of the range band
   EXPECT_EQ(film.sampleChannel(hylios::skin::kOneMinusEpsilon), 5u);
   EXPECT_THROW(film.sampleChannel(1.0), std::invalid_argument);
   EXPECT_THROW(film.sampleChannel(-0.1), std::invalid_argument);
@@ -109,11 +109,11 @@ TEST(Film, ValueIsTheMeanOfAChannelsSamples) {
 // Channels a pixel's samples missed take the linear interpolation in wavelength between the
 // nearest sampled channels of their band, or the nearest one at the band's ends.
 TEST(Film, UnsampledChannelsAreInterpolatedWithinTheirBand) {
-  Film film(threeBandDesc());  // band "vis": channels 1..4 at 400, 500, 600, 700 nm
-  film.addSample(0, 0, 2, 2.0);  // 500 nm
+  Film film(threeBandDesc());                  // band "vis": channels 1..4 at 400, 500, 600, 700 nm
+  film.addSample(0, 0, 2, 2.0);                // 500 nm
   EXPECT_DOUBLE_EQ(film.value(0, 0, 1), 2.0);  // 400 nm: below the first sampled channel
   EXPECT_DOUBLE_EQ(film.value(0, 0, 4), 2.0);  // 700 nm: beyond the last
-  film.addSample(0, 0, 4, 8.0);  // 700 nm
+  film.addSample(0, 0, 4, 8.0);                // 700 nm
   EXPECT_DOUBLE_EQ(film.value(0, 0, 3), 5.0);  // 600 nm: halfway between 2 and 8
   EXPECT_DOUBLE_EQ(film.value(0, 0, 1), 2.0);
   EXPECT_EQ(film.value(0, 0, 0), 0.0);  // other bands do not lend values
@@ -134,7 +134,8 @@ TEST(Film, FewerSamplesThanChannelsDoNotDarkenTheBand) {
       for (int s = 0; s < 2; ++s) film.addSample(x, y, film.sampleChannel(rng.uniform()), 1.0);
   for (int y = 0; y < desc.height; ++y)
     for (int x = 0; x < desc.width; ++x)
-      for (std::size_t c = 0; c < 4; ++c) ASSERT_DOUBLE_EQ(film.value(x, y, c), 1.0) << x << "," << y << " channel " << c;
+      for (std::size_t c = 0; c < 4; ++c)
+        ASSERT_DOUBLE_EQ(film.value(x, y, c), 1.0) << x << "," << y << " channel " << c;
 }
 
 TEST(Film, MonteCarloMeanPerChannelConverges) {

@@ -1,25 +1,23 @@
 // The path tracer against answers known in closed form: white furnace, direct light from point
 // and spherical area lights, the skin material's total reflectance, determinism across thread
 // counts. Monte Carlo assertions state their standard error σ and allow 4σ.
-#include "renderer/tracing/integrator.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "renderer/scene/data_paths.h"
+#include "renderer/tracing/integrator.h"
+#include "skin/core/constants.h"
+#include "skin/core/thread_limit.h"
 #include "skin/sampling/cosine_sampling.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_walk.h"
-#include "skin/core/constants.h"
-#include "skin/core/thread_limit.h"
 
 using hylios::kPi;
 
 using namespace hylios;
 
 namespace {
-
 
 EmissionDesc constant(double value) {
   EmissionDesc e;
@@ -103,7 +101,8 @@ TEST(Integrator, WhiteFurnaceDiffuseSphereReflectsTheEnvironment) {
   for (const double rho : {1.0, 0.5}) {
     const Integrator integrator(sphereScene(diffuse(rho), 2.0), {550});
     const MeanAndError m = diskAverage(integrator, 20000, 5);
-    EXPECT_NEAR(m.mean, rho * 2.0, 4 * m.standardError + 1e-12) << "rho " << rho << ", σ " << m.standardError;
+    EXPECT_NEAR(m.mean, rho * 2.0, 4 * m.standardError + 1e-12)
+        << "rho " << rho << ", σ " << m.standardError;
     EXPECT_LT(m.standardError, 0.01);  // σ ≈ 0.004: MIS keeps the furnace nearly noise-free
   }
 }
@@ -113,8 +112,8 @@ TEST(Integrator, WhiteFurnaceImageBackgroundIsExactAndDepthZeroIsBlack) {
   Film film(scene.film);
   const Integrator integrator(scene, {550});
   integrator.render(film, quietRenderOptions("test"));
-  EXPECT_DOUBLE_EQ(film.value(0, 0, 0), 1.5);                    // sky
-  EXPECT_DOUBLE_EQ(film.value(12, 12, 0), 0.0);                  // sphere, no bounce allowed
+  EXPECT_DOUBLE_EQ(film.value(0, 0, 0), 1.5);    // sky
+  EXPECT_DOUBLE_EQ(film.value(12, 12, 0), 0.0);  // sphere, no bounce allowed
 }
 
 TEST(Integrator, PointLightOnADiffusePlaneIsExact) {
@@ -164,7 +163,8 @@ TEST(Integrator, SphericalAreaLightOnADiffusePlaneMatchesItsSolidAngle) {
   RenderStats stats;
   for (int i = 0; i < n; ++i) {
     hylios::skin::Rng rng(9, 0, static_cast<std::uint64_t>(i));
-    const double L = integrator.radiance({{0.0, 0.0, 1.0}, {0, 0, -1}}, 0, rng, stats);  // under the lamp
+    const double L =
+        integrator.radiance({{0.0, 0.0, 1.0}, {0, 0, -1}}, 0, rng, stats);  // under the lamp
     sum += L;
     sum2 += L * L;
   }
@@ -178,7 +178,8 @@ TEST(Integrator, SkinSphereInAUniformEnvironmentReflectsTheWalksDiffuseAlbedo) {
   // uniform environment L every reflected path reaches the sky, so the mean radiance / L is the
   // walk's total reflectance for diffuse incidence. Reference: the same walk (S1, 550 nm) traced
   // directly with cosine-distributed incidence. Both estimates are Bernoulli-like with
-  // R ≈ 0.3: σ ≈ sqrt(R(1 − R)/N) ≈ 0.0046 each for N = 10000; the test allows 4σ of the difference.
+  // R ≈ 0.3: σ ≈ sqrt(R(1 − R)/N) ≈ 0.0046 each for N = 10000; the test allows 4σ of the
+  // difference.
   const int n = 10000;
   const Integrator integrator(sphereScene(skinMaterial("S1"), 1.0), {550});
   const MeanAndError rendered = diskAverage(integrator, n, 11);
@@ -191,13 +192,15 @@ TEST(Integrator, SkinSphereInAUniformEnvironmentReflectsTheWalksDiffuseAlbedo) {
     hylios::skin::Rng rng(12, 0, static_cast<std::uint64_t>(i));
     const hylios::skin::Vec3 d = hylios::skin::sampleCosineHemisphere(rng.uniform(), rng.uniform());
     const auto path = walk.trace(d, rng);
-    if (path.end == hylios::skin::PathEnd::SurfaceReflection || path.end == hylios::skin::PathEnd::SubsurfaceReflection)
+    if (path.end == hylios::skin::PathEnd::SurfaceReflection ||
+        path.end == hylios::skin::PathEnd::SubsurfaceReflection)
       reflected += 1;
   }
   const double reference = reflected / n;
-  const double sigma = std::hypot(rendered.standardError, std::sqrt(reference * (1 - reference) / n));
-  EXPECT_NEAR(rendered.mean, reference, 4 * sigma) << "rendered " << rendered.mean << " reference " << reference
-                                                   << " σ " << sigma;
+  const double sigma =
+      std::hypot(rendered.standardError, std::sqrt(reference * (1 - reference) / n));
+  EXPECT_NEAR(rendered.mean, reference, 4 * sigma)
+      << "rendered " << rendered.mean << " reference " << reference << " σ " << sigma;
   EXPECT_GT(reference, 0.1);
 }
 

@@ -1,9 +1,7 @@
 // Interruptible renders: sample passes leave the film's sums bit-identical; a render stopped
-// between passes, saved to a checkpoint (renderer/image/render_checkpoint.h), read back and continued
-// (at another thread count) gives exactly the film of an uninterrupted render; the EXR of a
-// stopped render records its spp; damaged or foreign checkpoints are refused, saying why.
-#include "renderer/image/render_checkpoint.h"
-
+// between passes, saved to a checkpoint (renderer/image/render_checkpoint.h), read back and
+// continued (at another thread count) gives exactly the film of an uninterrupted render; the EXR of
+// a stopped render records its spp; damaged or foreign checkpoints are refused, saying why.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -12,8 +10,9 @@
 #include <iterator>
 
 #include "renderer/image/film_output.h"
-#include "renderer/tracing/integrator.h"
+#include "renderer/image/render_checkpoint.h"
 #include "renderer/scene/scene_file.h"
+#include "renderer/tracing/integrator.h"
 #include "skin/core/thread_limit.h"
 
 using namespace hylios;
@@ -58,8 +57,9 @@ Film render(int threads, int samplesPerPass, int stopAfterPasses = -1, Film* res
   const hylios::ThreadLimit limit(threads);
   Film film(testScene().film);
   film.setWholeBandSamples(integrator().estimator() == hylios::skin::Estimator::Spectral);
-  if (resumeFrom) film.restoreState(resumeFrom->sums(), resumeFrom->counts(), resumeFrom->oddSums(), resumeFrom->oddCounts(),
-                                   resumeFrom->samplesPerPixelDone());
+  if (resumeFrom)
+    film.restoreState(resumeFrom->sums(), resumeFrom->counts(), resumeFrom->oddSums(),
+                      resumeFrom->oddCounts(), resumeFrom->samplesPerPixelDone());
   RenderOptions options;
   options.samplesPerPass = samplesPerPass;
   int passes = 0;
@@ -80,7 +80,8 @@ void expectSameFilm(const Film& a, const Film& b) {
   EXPECT_EQ(a.samplesPerPixelDone(), b.samplesPerPixelDone());
   EXPECT_TRUE(a.counts() == b.counts());
   std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.sums().size(); ++i) differing += a.sums()[i] != b.sums()[i];  // exact, bit for bit
+  for (std::size_t i = 0; i < a.sums().size(); ++i)
+    differing += a.sums()[i] != b.sums()[i];  // exact, bit for bit
   EXPECT_EQ(differing, 0u) << "of " << a.sums().size() << " sums";
 }
 
@@ -133,7 +134,8 @@ TEST(RenderPasses, StopBetweenPassesKeepsWholePasses) {
       std::uint32_t samples = 0;  // each sample fills one channel, or a whole band (spectral)
       for (std::size_t b = 0; b < stopped.bandCount(); ++b)
         for (std::size_t c : stopped.bandChannels(b))
-          if (!stopped.wholeBandSamples() || c == stopped.bandChannels(b).front()) samples += stopped.sampleCount(x, y, c);
+          if (!stopped.wholeBandSamples() || c == stopped.bandChannels(b).front())
+            samples += stopped.sampleCount(x, y, c);
       ASSERT_EQ(samples, 8u) << "pixel (" << x << ", " << y << ")";
     }
   const Film none = render(1, 4, 0);
@@ -155,8 +157,10 @@ TEST(RenderCheckpoint, StoppedRenderContinuedFromItsCheckpointEqualsUninterrupte
     EXPECT_EQ(in->spec().get_int_attribute("hylios:spp"), 6);
     EXPECT_EQ(in->spec().get_int_attribute("hylios:sppTarget"), kSpp);
     EXPECT_EQ(in->spec().get_string_attribute("hylios:seed"), "1");
-    std::vector<float> pixels(static_cast<std::size_t>(in->spec().image_pixels()) * in->spec().nchannels);
-    ASSERT_TRUE(in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    std::vector<float> pixels(static_cast<std::size_t>(in->spec().image_pixels()) *
+                              in->spec().nchannels);
+    ASSERT_TRUE(
+        in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
     double total = 0;
     for (const float v : pixels) {
       ASSERT_TRUE(std::isfinite(v));
@@ -169,7 +173,8 @@ TEST(RenderCheckpoint, StoppedRenderContinuedFromItsCheckpointEqualsUninterrupte
     EXPECT_EQ(saved.samplesPerPixelDone, 6);
     Film restored(testScene().film);
     restored.setWholeBandSamples(reference().wholeBandSamples());
-    restored.restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts, saved.samplesPerPixelDone);
+    restored.restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts,
+                          saved.samplesPerPixelDone);
     const Film continued = render(3 - threads, 0, -1, &restored);
     expectSameFilm(continued, reference());
   }
@@ -194,7 +199,9 @@ TEST(RenderCheckpoint, DamagedFilesAreRefusedSayingWhy) {
   writeRenderCheckpoint(state, identity(), stopped);
   const std::string good = readBytes(state);
 
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(scratch("absent.hylios-state")); }).find("no render checkpoint"),
+  EXPECT_NE(errorOf([&] {
+              readRenderCheckpoint(scratch("absent.hylios-state"));
+            }).find("no render checkpoint"),
             std::string::npos);
   std::string flipped = good;
   flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
@@ -205,11 +212,13 @@ TEST(RenderCheckpoint, DamagedFilesAreRefusedSayingWhy) {
   writeBytes(state, good.substr(0, 30));
   EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("truncated"), std::string::npos);
   writeBytes(state, "P6\n24 24\n255\n" + good.substr(13));
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("not a hylios render checkpoint"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("not a hylios render checkpoint"),
+            std::string::npos);
   std::string version = good;
   version[25] = 3;  // the u32 after the 25-byte magic
   writeBytes(state, version);
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("format version 3"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("format version 3"),
+            std::string::npos);
   writeBytes(state, good);
   EXPECT_EQ(readRenderCheckpoint(state).samplesPerPixelDone, 5);
 }
@@ -226,9 +235,10 @@ TEST(RenderCheckpoint, ForeignCheckpointsAreRefusedNamingEachDifference) {
   other.sceneContentHash ^= 1;
   other.channelWavelengthsNm.pop_back();
   const std::string message = errorOf([&] { readMatchingCheckpoint(state, other); });
-  for (const char* what : {"seed: checkpoint 1, this run 7", "spp target: checkpoint 12, this run 64",
-                           "resolution: checkpoint 24x24, this run 32x24", "options: checkpoint '--skin-model=walk'",
-                           "scene file contents", "channel wavelengths"})
+  for (const char* what :
+       {"seed: checkpoint 1, this run 7", "spp target: checkpoint 12, this run 64",
+        "resolution: checkpoint 24x24, this run 32x24", "options: checkpoint '--skin-model=walk'",
+        "scene file contents", "channel wavelengths"})
     EXPECT_NE(message.find(what), std::string::npos) << what << " missing in: " << message;
   EXPECT_TRUE(identityDifferences(identity(), identity()).empty());
 }
@@ -253,17 +263,23 @@ TEST(FilmRestoreState, RejectsStateThatDoesNotFit) {
   Film film(testScene().film);
   film.setWholeBandSamples(whole.wholeBandSamples());
   std::vector<std::uint32_t> counts = whole.counts();
-  EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp - 1), std::invalid_argument);  // counts add up to 12
+  EXPECT_THROW(
+      film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp - 1),
+      std::invalid_argument);  // counts add up to 12
   counts[5] += 1;
-  EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp), std::invalid_argument);
+  EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp),
+               std::invalid_argument);
   std::vector<double> sums = whole.sums();
   sums[3] = std::nan("");
-  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp), std::invalid_argument);
+  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp),
+               std::invalid_argument);
   sums.pop_back();
-  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp), std::invalid_argument);
+  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp),
+               std::invalid_argument);
   std::vector<std::uint32_t> odd = whole.oddCounts();
   odd[7] = whole.counts()[7] + 1;  // more odd samples than samples
-  EXPECT_THROW(film.restoreState(whole.sums(), whole.counts(), whole.oddSums(), odd, kSpp), std::invalid_argument);
+  EXPECT_THROW(film.restoreState(whole.sums(), whole.counts(), whole.oddSums(), odd, kSpp),
+               std::invalid_argument);
   film.restoreState(whole.sums(), whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp);
   expectSameFilm(film, whole);
 }

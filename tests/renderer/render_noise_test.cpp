@@ -1,14 +1,15 @@
 // The noise measure of renderer/image/render_noise.h on hand-made images with known answers.
-#include "renderer/image/render_noise.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "renderer/image/render_noise.h"
+
 using namespace hylios;
 
 namespace {
-NoiseImage image(int width, int height, std::vector<std::string> groups, std::vector<double> values) {
+NoiseImage image(int width, int height, std::vector<std::string> groups,
+                 std::vector<double> values) {
   NoiseImage n;
   n.width = width;
   n.height = height;
@@ -29,7 +30,8 @@ TEST(RenderNoise, RelativeNoiseIsTheMedianOfHalfDifferencesOverTheMean) {
   // The mask keeps pixels 0 and 2 only: the median of 0.7071 and 0.1571 is their mean.
   const auto masked = measureNoise(a, b, {true, false, true});
   EXPECT_EQ(masked[0].pixels, 2u);
-  EXPECT_NEAR(masked[0].medianRelative, 0.5 * (1.0 / std::sqrt(2.0) + 1.0 / std::sqrt(2.0) / 4.5), 1e-15);
+  EXPECT_NEAR(masked[0].medianRelative, 0.5 * (1.0 / std::sqrt(2.0) + 1.0 / std::sqrt(2.0) / 4.5),
+              1e-15);
   EXPECT_NEAR(worstNoise(noise), noise[0].medianRelative, 0);
 }
 
@@ -44,7 +46,8 @@ TEST(RenderNoise, ChromaticityNoiseIgnoresBrightnessAndSeesHue) {
   EXPECT_EQ(noise[3].group, "chromaticity");
   EXPECT_NEAR(noise[3].medianRelative, 0.0, 1e-15);
   const auto hue = measureNoise(a, b, {false, true});
-  const double dc = std::sqrt(1.0 / 36 + 2.0 / 144), mean = std::sqrt(std::pow(5.0 / 12, 2) + 2 * std::pow(7.0 / 24, 2));
+  const double dc = std::sqrt(1.0 / 36 + 2.0 / 144),
+               mean = std::sqrt(std::pow(5.0 / 12, 2) + 2 * std::pow(7.0 / 24, 2));
   EXPECT_NEAR(hue[3].medianRelative, dc / std::sqrt(2.0) / mean, 1e-12);
 }
 

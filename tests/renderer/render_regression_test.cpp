@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "renderer/image/film_output.h"
-#include "renderer/tracing/integrator.h"
 #include "renderer/scene/scene_file.h"
+#include "renderer/tracing/integrator.h"
 
 using namespace hylios;
 
@@ -50,7 +50,8 @@ Image readReference(const std::string& path, const Film& film) {
     column.push_back(static_cast<int>(it - spec.channelnames.begin()));
   }
   for (int p = 0; p < spec.width * spec.height; ++p)
-    for (int c : column) image.values.push_back(pixels[static_cast<std::size_t>(p) * spec.nchannels + c]);
+    for (int c : column)
+      image.values.push_back(pixels[static_cast<std::size_t>(p) * spec.nchannels + c]);
   return image;
 }
 
@@ -58,7 +59,8 @@ Image fromFilm(const Film& film) {
   Image image{film.width(), film.height(), {}, static_cast<int>(film.channels().size())};
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x)
-      for (std::size_t c = 0; c < film.channels().size(); ++c) image.values.push_back(film.value(x, y, c));
+      for (std::size_t c = 0; c < film.channels().size(); ++c)
+        image.values.push_back(film.value(x, y, c));
   return image;
 }
 
@@ -78,13 +80,17 @@ double meanZ(const std::vector<double>& deltas) {
 
 struct Comparison {
   double wholeZ = 0, varyingZ = 0, worstBlockZ = 0;
-  bool pass() const { return std::fabs(wholeZ) < 4 && std::fabs(varyingZ) < 4 && std::fabs(worstBlockZ) < 5; }
+  bool pass() const {
+    return std::fabs(wholeZ) < 4 && std::fabs(varyingZ) < 4 && std::fabs(worstBlockZ) < 5;
+  }
 };
 
 std::vector<bool> varyingPixels(const Image& reference) {
   std::map<double, int> counts;
   for (double v : reference.values) ++counts[v];
-  const double mode = std::max_element(counts.begin(), counts.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+  const double mode = std::max_element(counts.begin(), counts.end(), [](auto& a, auto& b) {
+                        return a.second < b.second;
+                      })->first;
   std::vector<bool> varying(reference.values.size());
   for (std::size_t i = 0; i < varying.size(); ++i) varying[i] = reference.values[i] != mode;
   return varying;
@@ -107,7 +113,8 @@ Comparison compare(const Image& test, const Image& reference, const std::vector<
       for (int y = by; y < std::min(by + block, test.height); ++y)
         for (int x = bx; x < std::min(bx + block, test.width); ++x)
           for (int c = 0; c < test.channels; ++c) {
-            const std::size_t i = (static_cast<std::size_t>(y) * test.width + x) * test.channels + c;
+            const std::size_t i =
+                (static_cast<std::size_t>(y) * test.width + x) * test.channels + c;
             if (varying[i]) deltas.push_back(test.values[i] - reference.values[i]);
           }
       if (deltas.size() < 64) continue;
@@ -130,7 +137,9 @@ struct RegressionCase {
 
 class RenderRegression : public ::testing::TestWithParam<RegressionCase> {};
 
-std::string caseName(const ::testing::TestParamInfo<RegressionCase>& caseInfo) { return caseInfo.param.scene; }
+std::string caseName(const ::testing::TestParamInfo<RegressionCase>& caseInfo) {
+  return caseInfo.param.scene;
+}
 
 }  // namespace
 
@@ -146,28 +155,33 @@ TEST_P(RenderRegression, MatchesTheReferenceWithinNoiseAndDetectsAFivePercentCha
   const Integrator integrator(scene, wavelengths);
   integrator.render(film, quietRenderOptions(param.scene));
   const Image test = fromFilm(film);
-  const Image reference = readReference(root + "/tests/data/regression/" + param.scene + ".exr", film);
+  const Image reference =
+      readReference(root + "/tests/data/regression/" + param.scene + ".exr", film);
   ASSERT_EQ(reference.width, test.width);
   ASSERT_EQ(reference.height, test.height);
   const std::vector<bool> varying = varyingPixels(reference);
 
   const Comparison same = compare(test, reference, varying);
-  EXPECT_TRUE(same.pass()) << "z whole " << same.wholeZ << ", varying " << same.varyingZ << ", worst block "
-                           << same.worstBlockZ;
+  EXPECT_TRUE(same.pass()) << "z whole " << same.wholeZ << ", varying " << same.varyingZ
+                           << ", worst block " << same.worstBlockZ;
   for (const double factor : {1.05, 0.95}) {
     const Comparison all = compare(test, scaled(reference, factor, nullptr), varying);
     const Comparison skinOnly = compare(test, scaled(reference, factor, &varying), varying);
-    EXPECT_FALSE(all.pass()) << "reference × " << factor << " passed: z " << all.wholeZ << ", " << all.varyingZ;
-    EXPECT_FALSE(skinOnly.pass()) << "varying pixels × " << factor << " passed: z " << skinOnly.wholeZ << ", "
-                                  << skinOnly.varyingZ << ", block " << skinOnly.worstBlockZ;
-    std::cout << param.scene << ": same z " << same.wholeZ << " / " << same.varyingZ << " / block " << same.worstBlockZ
-              << "; varying × " << factor << " z " << skinOnly.varyingZ << "\n";
-    EXPECT_GT(std::fabs(skinOnly.varyingZ), 5) << "a 5 % change is too close to the noise at " << param.testSpp
-                                               << " spp";
+    EXPECT_FALSE(all.pass()) << "reference × " << factor << " passed: z " << all.wholeZ << ", "
+                             << all.varyingZ;
+    EXPECT_FALSE(skinOnly.pass()) << "varying pixels × " << factor << " passed: z "
+                                  << skinOnly.wholeZ << ", " << skinOnly.varyingZ << ", block "
+                                  << skinOnly.worstBlockZ;
+    std::cout << param.scene << ": same z " << same.wholeZ << " / " << same.varyingZ << " / block "
+              << same.worstBlockZ << "; varying × " << factor << " z " << skinOnly.varyingZ << "\n";
+    EXPECT_GT(std::fabs(skinOnly.varyingZ), 5)
+        << "a 5 % change is too close to the noise at " << param.testSpp << " spp";
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, RenderRegression,
-                         ::testing::Values(RegressionCase{"skin_sphere_365", 64}, RegressionCase{"skin_sphere_550", 32},
-                                           RegressionCase{"skin_sphere_1100", 16}, RegressionCase{"head_1650", 256}),
+                         ::testing::Values(RegressionCase{"skin_sphere_365", 64},
+                                           RegressionCase{"skin_sphere_550", 32},
+                                           RegressionCase{"skin_sphere_1100", 16},
+                                           RegressionCase{"head_1650", 256}),
                          caseName);

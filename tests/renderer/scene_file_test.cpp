@@ -1,13 +1,13 @@
 // Scene files: a full scene parses to the values it says; every bad input is refused with a
 // message naming file:line:col; every shipped scene (scenes/**.toml but specimens) parses.
-#include "renderer/scene/scene_file.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "renderer/scene/scene_file.h"
 
 namespace hylios {
 namespace {

@@ -78,7 +78,8 @@ TEST(SceneFormatDoc, EveryParserTableHasASection) {
 TEST(SceneFormatDoc, DocumentedKeysAreAccepted) {
   const auto sections = docSections();
   for (const Section& s : kSections) {
-    ASSERT_TRUE(sections.count(s.heading)) << "docs/scene-format.md has no section '## " << s.heading << "'";
+    ASSERT_TRUE(sections.count(s.heading))
+        << "docs/scene-format.md has no section '## " << s.heading << "'";
     const std::set<std::string> accepted = parserKeys(s.tables);
     for (const std::string& key : tableKeys(sections.at(s.heading)))
       EXPECT_TRUE(accepted.count(key)) << s.heading << ": docs/scene-format.md lists '" << key

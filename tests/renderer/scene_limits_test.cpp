@@ -124,7 +124,8 @@ TEST(SceneLimits, Row2AFarHugeSphereLeavesTheDirectLightNearTheOrigin) {
     const Integrator integrator(withSphere, {550});
     skin::Rng rng(1);
     RenderStats stats;
-    EXPECT_NEAR(integrator.radiance({{0, 0, 5}, {0, 0, -1}}, 0, rng, stats), expected, 1e-6 * expected)
+    EXPECT_NEAR(integrator.radiance({{0, 0, 5}, {0, 0, -1}}, 0, rng, stats), expected,
+                1e-6 * expected)
         << (farSphere ? "with" : "without") << " the far sphere";
   }
 }
@@ -137,7 +138,9 @@ TEST(SceneLimits, Row8AStopRequestDuringTheFirstPassIsHonouredInsideIt) {
   const Integrator integrator(scene, {550});
   RenderOptions options = quietRenderOptions("stop");
   std::atomic<int> calls{0};
-  options.stopRequested = [&calls] { return ++calls > 1; };  // the signal arrives once the pass has begun
+  options.stopRequested = [&calls] {
+    return ++calls > 1;
+  };  // the signal arrives once the pass has begun
   integrator.render(film, options);
   EXPECT_EQ(film.samplesPerPixelDone(), 0);  // abandoned: nothing of the pass counts (before: 1)
 }
@@ -166,14 +169,17 @@ name = "again"
     EXPECT_NE(error.find("band 'again'"), std::string::npos) << band << error;
     EXPECT_NE(error.find("band 'nm550'"), std::string::npos) << band << error;
   }
-  EXPECT_EQ(sceneError(edited("[[material]]", second + "wavelength_nm = 550.01\n\n[[material]]")), "");
+  EXPECT_EQ(sceneError(edited("[[material]]", second + "wavelength_nm = 550.01\n\n[[material]]")),
+            "");
 }
 
 TEST(SceneLimits, Row11ErrorsSayWhatIsReallyWrong) {
-  const std::string camera = sceneError(edited("position = [0.0, 0.0, 4.0]", "position = [2.5, 1.8, 1e300]"));
+  const std::string camera =
+      sceneError(edited("position = [0.0, 0.0, 4.0]", "position = [2.5, 1.8, 1e300]"));
   EXPECT_NE(camera.find("'position'[2]"), std::string::npos) << camera;
   EXPECT_EQ(camera.find("'up'"), std::string::npos) << camera;
-  const std::string mesh = sceneError(edited("type = \"sphere\"", "type = \"mesh\"\nfile = \"../specimens\""));
+  const std::string mesh =
+      sceneError(edited("type = \"sphere\"", "type = \"mesh\"\nfile = \"../specimens\""));
   EXPECT_NE(mesh.find("is a folder"), std::string::npos) << mesh;
 }
 
@@ -202,8 +208,10 @@ TEST(SceneLimits, SpectraAndSkinExtrasAtExtremeMagnitudesAreRefused) {
   const std::vector<std::pair<std::string, std::string>> extras = {
       {"spp = 4", "spp = 4\nexposure = 1e300"},
       {"specimen = \"S1\"", "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1e300 }"},
-      {"specimen = \"S1\"", "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1, radius_cm = 1e-300 }"},
-      {"specimen = \"S1\"", "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1, melanin_gain = 1e300 }"},
+      {"specimen = \"S1\"",
+       "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1, radius_cm = 1e-300 }"},
+      {"specimen = \"S1\"",
+       "specimen = \"S1\"\nfreckles = { density_per_cm2 = 1, melanin_gain = 1e300 }"},
   };
   for (const auto& [from, to] : extras) {
     const std::string error = sceneError(edited(from, to));

@@ -1,25 +1,23 @@
 // The skin material's parts: the melanin-level cache with stochastic rounding, freckles, the
 // melanin texture, the surface-lobe model g, and the projection of walk exits onto the surface.
-#include "renderer/tracing/skin_material.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "renderer/scene/data_paths.h"
-#include "renderer/tracing/freckle_field.h"
-#include "renderer/tracing/skin_walk_cache.h"
 #include "renderer/scene/texture_map.h"
+#include "renderer/tracing/freckle_field.h"
+#include "renderer/tracing/skin_material.h"
+#include "renderer/tracing/skin_walk_cache.h"
+#include "skin/core/constants.h"
 #include "skin/core/random.h"
 #include "tests/support/test_spectra.h"
-#include "skin/core/constants.h"
 
 using hylios::kPi;
 
 using namespace hylios;
 
 namespace {
-
 
 MaterialDesc skinDesc() {
   MaterialDesc m;
@@ -83,7 +81,8 @@ TEST(FreckleField, CoveredFractionMatchesDensityAndRadius) {
     if (m > 1) ++covered;
   }
   EXPECT_NEAR(static_cast<double>(covered) / n, 0.5 * 2 * kPi * 0.01 / 3, 4 * 2.7e-4);
-  EXPECT_EQ(field.multiplier({3.3, 4.4, 0.37}), FreckleField(desc, {}).multiplier({3.3, 4.4, 0.37}));
+  EXPECT_EQ(field.multiplier({3.3, 4.4, 0.37}),
+            FreckleField(desc, {}).multiplier({3.3, 4.4, 0.37}));
 }
 
 TEST(FreckleField, CentreOfAFreckleHasTheFullGain) {
@@ -92,16 +91,19 @@ TEST(FreckleField, CentreOfAFreckleHasTheFullGain) {
   desc.radiusCm = 0.2;
   desc.melaninGain = 2.5;
   const FreckleField field(desc, {});
-  // Search a line for the strongest multiplier: a freckle crossing it near its centre reaches ≈ gain.
+  // Search a line for the strongest multiplier: a freckle crossing it near its centre reaches ≈
+  // gain.
   double strongest = 1;
-  for (int i = 0; i < 200000; ++i) strongest = std::max(strongest, field.multiplier({i * 1e-3, 0.1, 0.05}));
+  for (int i = 0; i < 200000; ++i)
+    strongest = std::max(strongest, field.multiplier({i * 1e-3, 0.1, 0.05}));
   EXPECT_GT(strongest, 2.4);
   EXPECT_LE(strongest, 2.5);
 }
 
 TEST(TextureMap, BilinearLookupWithBottomRowAtVZero) {
-  const TextureMap map(2, 2, {0.0f, 1.0f,    // top row
-                              2.0f, 3.0f});  // bottom row
+  const TextureMap map(2, 2,
+                       {0.0f, 1.0f,                 // top row
+                        2.0f, 3.0f});               // bottom row
   EXPECT_DOUBLE_EQ(map.lookup({0.25, 0.25}), 2.0);  // bottom-left texel centre
   EXPECT_DOUBLE_EQ(map.lookup({0.75, 0.75}), 1.0);  // top-right texel centre
   EXPECT_DOUBLE_EQ(map.lookup({0.5, 0.25}), 2.5);   // between the bottom texels
@@ -123,7 +125,8 @@ TEST(SkinMaterial, SurfaceLobeModelIsANormalisedDensity) {
       const double mu = (i + 0.5) / nMu, sinTheta = std::sqrt(1 - mu * mu);
       for (int j = 0; j < nPhi; ++j) {
         const double phi = 2 * kPi * (j + 0.5) / nPhi;
-        integral += material.surfaceLobeDensity(incident, normal, {sinTheta * std::cos(phi), sinTheta * std::sin(phi), mu});
+        integral += material.surfaceLobeDensity(
+            incident, normal, {sinTheta * std::cos(phi), sinTheta * std::sin(phi), mu});
       }
     }
     integral *= 2 * kPi / (nMu * nPhi);

@@ -1,16 +1,16 @@
 // The `table` skin mode in the renderer: a small skin scene rendered with exit tables agrees with
 // the exact walk within the renders' noise; a bad skin_mode is a positioned scene error.
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <cmath>
+#include <stdlib.h>
 #include <string>
 #include <vector>
 
-#include "renderer/tracing/exit_table_cache.h"
 #include "renderer/image/film.h"
-#include "renderer/tracing/integrator.h"
 #include "renderer/scene/scene_file.h"
+#include "renderer/tracing/exit_table_cache.h"
+#include "renderer/tracing/integrator.h"
 
 using namespace hylios;
 
@@ -35,8 +35,9 @@ std::vector<double> render(SceneDesc scene, skin::SkinMode mode, std::uint64_t s
 
 /// z of the mean difference over the pixels where either image is nonzero (the sphere), from the
 /// per-pixel differences' spread (pixels are independent: different seeds).
-double meanDifferenceZ(const std::vector<double>& a, const std::vector<double>& b, std::size_t first,
-                       std::size_t stride, std::size_t rows, int width, double* relative) {
+double meanDifferenceZ(const std::vector<double>& a, const std::vector<double>& b,
+                       std::size_t first, std::size_t stride, std::size_t rows, int width,
+                       double* relative) {
   double sum = 0, sum2 = 0, reference = 0;
   double n = 0;
   for (std::size_t row = first; row < first + rows; ++row)
@@ -61,18 +62,22 @@ double meanDifferenceZ(const std::vector<double>& a, const std::vector<double>& 
 // pixels at 16 spp the standard error of the sphere's mean is ≈ 0.2 % of it, so a 1 % table error
 // would show as z ≈ 5.
 TEST(SkinTableRender, TableModeAgreesWithWalkMode) {
-  setenv("HYLIOS_CACHE_DIR", (std::string(HYLIOS_BINARY_DIR) + "/skin_table_render_test_cache").c_str(), 1);
-  SceneDesc scene = loadSceneFile(std::string(HYLIOS_SOURCE_DIR) + "/scenes/test/skin_sphere_550.toml");
+  setenv("HYLIOS_CACHE_DIR",
+         (std::string(HYLIOS_BINARY_DIR) + "/skin_table_render_test_cache").c_str(), 1);
+  SceneDesc scene =
+      loadSceneFile(std::string(HYLIOS_SOURCE_DIR) + "/scenes/test/skin_sphere_550.toml");
   scene.film.samplesPerPixel = 16;
   const std::vector<double> walk = render(scene, skin::SkinMode::Walk, 11),
                             table = render(scene, skin::SkinMode::Table, 12);
   const int w = scene.film.width, h = scene.film.height;
   double relative = 0;
-  const double whole = meanDifferenceZ(table, walk, 0, static_cast<std::size_t>(w), static_cast<std::size_t>(h), w, &relative);
+  const double whole = meanDifferenceZ(table, walk, 0, static_cast<std::size_t>(w),
+                                       static_cast<std::size_t>(h), w, &relative);
   std::cout << "table − walk over the sphere: " << 100 * relative << " %, z " << whole << "\n";
   EXPECT_LT(std::fabs(whole), 4);
   for (std::size_t half = 0; half < 2; ++half)
-    EXPECT_LT(std::fabs(meanDifferenceZ(table, walk, half * static_cast<std::size_t>(h / 2), static_cast<std::size_t>(w),
+    EXPECT_LT(std::fabs(meanDifferenceZ(table, walk, half * static_cast<std::size_t>(h / 2),
+                                        static_cast<std::size_t>(w),
                                         static_cast<std::size_t>(h / 2), w, nullptr)),
               4)
         << "half " << half;

@@ -70,8 +70,8 @@ TEST(SpectralRender, HeroWavelengthRenderEqualsPerWavelengthRender) {
     const double mean = sum / pixels;
     const double standardError = std::sqrt((sumSquares / pixels - mean * mean) / (pixels - 1));
     EXPECT_LE(std::fabs(mean), 4 * standardError)
-        << spectral.channels()[c].wavelengthNm << " nm: mean difference " << mean << " ± " << standardError
-        << " (mean radiance " << reference / pixels << ")";
+        << spectral.channels()[c].wavelengthNm << " nm: mean difference " << mean << " ± "
+        << standardError << " (mean radiance " << reference / pixels << ")";
     EXPECT_LT(standardError, 0.02 * reference / pixels);  // the test sees an 8 % bias
   }
 }
@@ -124,7 +124,8 @@ TEST(SpectralRender, NoiseTargetStopsWhenTheEstimateIsReached) {
   again.film.samplesPerPixel = film.samplesPerPixelDone();
   again.integrator.seed = 99;
   const Film other = render(again);
-  const auto twoSeeds = measureNoise(filmHalfNoiseImage(film, false), filmHalfNoiseImage(other, false), film.coverage());
+  const auto twoSeeds = measureNoise(filmHalfNoiseImage(film, false),
+                                     filmHalfNoiseImage(other, false), film.coverage());
   const double own = worstNoise(stats.noise), measured = worstNoise(twoSeeds) / std::sqrt(2.0);
   EXPECT_GT(own / measured, 1 / 1.5) << own << " vs " << measured;
   EXPECT_LT(own / measured, 1.5) << own << " vs " << measured;

@@ -1,15 +1,14 @@
-#include "skin/core/atomic_file.h"
-
 #include <gtest/gtest.h>
-
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <chrono>
+#include <fcntl.h>
 #include <fstream>
 #include <stdexcept>
 #include <thread>
+#include <unistd.h>
+
+#include "skin/core/atomic_file.h"
 
 namespace fs = std::filesystem;
 

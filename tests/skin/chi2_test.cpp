@@ -1,15 +1,14 @@
 // The chi-square helper itself: p-values against tabulated quantiles, pooling, and that it
 // rejects a sample drawn from a different density (so the sampler tests cannot pass vacuously).
-#include "tests/support/chi2.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
+#include "skin/core/constants.h"
 #include "skin/core/random.h"
 #include "skin/sampling/rayleigh_sampling.h"
-#include "skin/core/constants.h"
+#include "tests/support/chi2.h"
 
 using hylios::kPi;
 
@@ -31,13 +30,11 @@ TEST(Chi2Helper, PValuesMatchTabulatedQuantiles) {
 }
 
 TEST(Chi2Helper, IntegratesClosedForms) {
-  EXPECT_NEAR(integrate([](double x) { return std::sin(x); }, 0.0, kPi), 2.0,
-              1e-11);
+  EXPECT_NEAR(integrate([](double x) { return std::sin(x); }, 0.0, kPi), 2.0, 1e-11);
   // A peak of width 1e-4 between the first nodes is still found: ∫ of a normalised Lorentzian.
   const double w = 1e-4;
   const auto lorentz = [w](double x) { return w / (kPi * (x * x + w * w)); };
-  EXPECT_NEAR(integrate(lorentz, -0.3, 0.7), (std::atan(0.7 / w) + std::atan(0.3 / w)) /
-                                                 kPi, 1e-9);
+  EXPECT_NEAR(integrate(lorentz, -0.3, 0.7), (std::atan(0.7 / w) + std::atan(0.3 / w)) / kPi, 1e-9);
 }
 
 TEST(Chi2Helper, PoolsSmallBinsAndFlagsImpossibleSamples) {
@@ -63,7 +60,8 @@ TEST(Chi2Helper, RejectsRayleighSamplesAgainstUniformCosine) {
   std::vector<double> mus(100000);
   for (double& mu : mus) mu = skin::sampleRayleighCos(rng.uniform());
   const auto edges = uniformEdges(-1.0, 1.0, 20);
-  const Chi2Result wrong = chi2Test1D(mus, [](double) { return 0.5; }, edges);
+  const Chi2Result wrong = chi2Test1D(
+      mus, [](double) { return 0.5; }, edges);
   EXPECT_FALSE(chi2Accepts(wrong));
   EXPECT_LT(wrong.pValue, 1e-10);
   EXPECT_TRUE(chi2Accepts(chi2Test1D(mus, skin::rayleighCosDensity, edges)));
@@ -76,8 +74,10 @@ TEST(Chi2Helper, RejectsASlightlyWrongDensity) {
   std::vector<double> xs(1000000);
   for (double& x : xs) x = rng.uniform();
   const auto edges = uniformEdges(0.0, 1.0, 20);
-  EXPECT_FALSE(chi2Accepts(chi2Test1D(xs, [](double x) { return 0.95 + 0.1 * x; }, edges)));
-  EXPECT_TRUE(chi2Accepts(chi2Test1D(xs, [](double) { return 1.0; }, edges)));
+  EXPECT_FALSE(chi2Accepts(chi2Test1D(
+      xs, [](double x) { return 0.95 + 0.1 * x; }, edges)));
+  EXPECT_TRUE(chi2Accepts(chi2Test1D(
+      xs, [](double) { return 1.0; }, edges)));
 }
 
 TEST(Chi2Helper, TwoDimensionalTestAcceptsAndRejects) {
@@ -88,8 +88,10 @@ TEST(Chi2Helper, TwoDimensionalTestAcceptsAndRejects) {
     ys[i] = rng.uniform();
   }
   const auto edges = uniformEdges(0.0, 1.0, 10);
-  EXPECT_TRUE(chi2Accepts(chi2Test2D(xs, ys, [](double x, double) { return 2.0 * x; }, edges, edges)));
-  EXPECT_FALSE(chi2Accepts(chi2Test2D(xs, ys, [](double, double y) { return 2.0 * y; }, edges, edges)));
+  EXPECT_TRUE(chi2Accepts(chi2Test2D(
+      xs, ys, [](double x, double) { return 2.0 * x; }, edges, edges)));
+  EXPECT_FALSE(chi2Accepts(chi2Test2D(
+      xs, ys, [](double, double y) { return 2.0 * y; }, edges, edges)));
 }
 
 }  // namespace

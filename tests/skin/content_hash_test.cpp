@@ -10,7 +10,7 @@ using hylios::skin::fnv1a64;
 
 TEST(ContentHash, PublishedFnv1a64Vectors) {
   // Test vectors of the FNV reference suite (Fowler, Noll, Vo; IETF draft-eastlake-fnv).
-  EXPECT_EQ(fnv1a64("", 0), 0xcbf29ce484222325ULL);        // the offset basis
+  EXPECT_EQ(fnv1a64("", 0), 0xcbf29ce484222325ULL);  // the offset basis
   EXPECT_EQ(fnv1a64("a", 1), 0xaf63dc4c8601ec8cULL);
   EXPECT_EQ(fnv1a64("foobar", 6), 0x85944171f73967e8ULL);
 }
@@ -30,12 +30,14 @@ TEST(ContentHash, ValuesAreLittleEndianBytes) {
   const unsigned char one[8] = {1, 0, 0, 0, 0, 0, 0, 0};
   EXPECT_EQ(ContentHash().addU64(1).value(), fnv1a64(one, 8));
   // A string is its length, then its bytes (so "ab" + "c" differs from "a" + "bc").
-  EXPECT_NE(ContentHash().addString("ab").addString("c").value(), ContentHash().addString("a").addString("bc").value());
+  EXPECT_NE(ContentHash().addString("ab").addString("c").value(),
+            ContentHash().addString("a").addString("bc").value());
   EXPECT_EQ(ContentHash().addString("").value(), ContentHash().addU64(0).value());
 }
 
 TEST(ContentHash, ChangedValueChangesTheHash) {
-  EXPECT_NE(ContentHash().addDouble(0.5).value(), ContentHash().addDouble(0.5000000000000001).value());
+  EXPECT_NE(ContentHash().addDouble(0.5).value(),
+            ContentHash().addDouble(0.5000000000000001).value());
   EXPECT_NE(ContentHash().addBool(true).value(), ContentHash().addBool(false).value());
 }
 

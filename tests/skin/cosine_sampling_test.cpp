@@ -1,22 +1,20 @@
 // Cosine-weighted sampling (Sec. 4.2.2 internal bounces, Sec. 4.3 dermis/hypodermis reflection):
 // chi-square of the polar angle and of the hemisphere direction, hand values, end points.
-#include "skin/sampling/cosine_sampling.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "skin/core/random.h"
-#include "tests/support/chi2.h"
 #include "skin/core/constants.h"
+#include "skin/core/random.h"
+#include "skin/sampling/cosine_sampling.h"
+#include "tests/support/chi2.h"
 
 using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
-
 
 TEST(CosineSampling, InversionByHand) {
   // F(θ) = sin²θ: u = 1/4 -> θ = π/6, u = 1/2 -> θ = π/4, u = 0 -> θ = 0.

@@ -1,17 +1,16 @@
 // Exit distributions: bin geometry in closed form, the combination of estimates, and the
 // per-steradian / per-area densities against walks and samples whose answers are known exactly.
-#include "skin/exit_distribution.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "tests/support/chi2.h"
-#include "skin/sampling/cosine_sampling.h"
-#include "skin/fresnel.h"
-#include "skin/skin_simulation.h"
 #include "skin/core/constants.h"
+#include "skin/exit_distribution.h"
+#include "skin/fresnel.h"
+#include "skin/sampling/cosine_sampling.h"
+#include "skin/skin_simulation.h"
+#include "tests/support/chi2.h"
 #include "tests/support/clear_optics.h"
 
 using hylios::kPi;
@@ -19,7 +18,6 @@ using hylios::kPi;
 using namespace hylios::skin;
 
 namespace {
-
 
 using hylios::test::clearOptics;
 
@@ -35,7 +33,8 @@ WalkRunOptions smoothRun(double angleDeg, std::uint64_t rays) {
 }  // namespace
 
 TEST(DirectionBins, SolidAnglesSumToTheHemisphere) {
-  for (auto [polar, azimuth] : {std::pair<std::size_t, std::size_t>{1, 1}, {18, 36}, {7, 5}, {90, 1}}) {
+  for (auto [polar, azimuth] :
+       {std::pair<std::size_t, std::size_t>{1, 1}, {18, 36}, {7, 5}, {90, 1}}) {
     const DirectionBins bins(polar, azimuth);
     double solid = 0, projected = 0;
     for (std::size_t i = 0; i < polar; ++i) {
@@ -46,7 +45,8 @@ TEST(DirectionBins, SolidAnglesSumToTheHemisphere) {
     EXPECT_NEAR(projected, kPi, 1e-12) << polar << "×" << azimuth;
   }
   // One hand value: the 0–5° ring in 36 azimuth bins: (1 − cos 5°)·2π/36 = 6.6415e-4 sr.
-  EXPECT_NEAR(DirectionBins(18, 36).solidAngleSr(0), (1 - std::cos(5 * kPi / 180)) * 2 * kPi / 36, 1e-15);
+  EXPECT_NEAR(DirectionBins(18, 36).solidAngleSr(0), (1 - std::cos(5 * kPi / 180)) * 2 * kPi / 36,
+              1e-15);
   EXPECT_NEAR(DirectionBins(18, 36).solidAngleSr(0), 6.6415e-4, 1e-8);
   EXPECT_THROW(DirectionBins(0, 4), std::invalid_argument);
   EXPECT_THROW(DirectionBins(4, 4).flatIndex(4, 0), std::out_of_range);
@@ -112,18 +112,22 @@ TEST(ReflectionDistribution, DiffuseJunctionUnderAClearMatchedStackIsLambertian)
     for (std::size_t j = 0; j < bins.azimuthBins(); ++j) {
       const std::size_t b = bins.flatIndex(i, j);
       const double p = bins.projectedSolidAngleSr(i) / kPi;  // probability of the bin
-      observed.push_back(tally.subsurfaceDirections()->estimate(b).mean * static_cast<double>(rays));
+      observed.push_back(tally.subsurfaceDirections()->estimate(b).mean *
+                         static_cast<double>(rays));
       expected.push_back(p * static_cast<double>(rays));
       EXPECT_EQ(d.perSteradian.surface[b].mean, 0.0);
       EXPECT_EQ(d.perSteradian.total[b].mean, d.perSteradian.subsurface[b].mean);
       // z-test of the BRDF against 1/π with σ = √(p(1−p)/N)/Ω⊥ (≈ 22 % of 1/π in the rim bins,
       // 0.8 % near the normal): the largest of 648 |z| stays below 4.5 (false alarm ≈ 0.4 %).
       // The reported σ is the binomial one of the observed fraction p̂: √(p̂(1−p̂)/(N−1))/Ω⊥.
-      const double sigma = std::sqrt(p * (1 - p) / static_cast<double>(rays)) / bins.projectedSolidAngleSr(i);
+      const double sigma =
+          std::sqrt(p * (1 - p) / static_cast<double>(rays)) / bins.projectedSolidAngleSr(i);
       const double observedP = tally.subsurfaceDirections()->estimate(b).mean;
       const double reportedSigma =
-          std::sqrt(observedP * (1 - observedP) / static_cast<double>(rays - 1)) / bins.projectedSolidAngleSr(i);
-      EXPECT_NEAR(d.brdf.subsurface[b].standardError, reportedSigma, 1e-9 * reportedSigma) << "bin " << b;
+          std::sqrt(observedP * (1 - observedP) / static_cast<double>(rays - 1)) /
+          bins.projectedSolidAngleSr(i);
+      EXPECT_NEAR(d.brdf.subsurface[b].standardError, reportedSigma, 1e-9 * reportedSigma)
+          << "bin " << b;
       worstZ = std::max(worstZ, std::fabs(d.brdf.subsurface[b].mean - 1 / kPi) / sigma);
     }
   }
@@ -137,7 +141,8 @@ TEST(ReflectionDistribution, DiffuseJunctionUnderAClearMatchedStackIsLambertian)
   for (std::size_t k = 0; k < cut.total.size(); ++k) {
     const std::size_t i = k < 18 ? 17 - k : k - 18;
     const double value = bins.projectedSolidAngleSr(i) / bins.solidAngleSr(i) / kPi;
-    EXPECT_NEAR(cut.total[k].mean, value, 4.5 * cut.total[k].standardError) << cut.signedPolarDeg[k];
+    EXPECT_NEAR(cut.total[k].mean, value, 4.5 * cut.total[k].standardError)
+        << cut.signedPolarDeg[k];
   }
 }
 
@@ -150,11 +155,12 @@ TEST(ReflectionDistribution, SmoothSurfaceReflectsIntoTheSpecularBinOnThePositiv
   run.tally.azimuthBins = 36;
   const ReflectionDistribution d = reflectionDistribution(simulateSkin(clearOptics(1.4), run));
   const DirectionBins bins(18, 36);
-  const double fresnel = fresnelReflectance(std::cos(32 * kPi / 180), 1.0, 1.4);  // ≈ 0.030
+  const double fresnel = fresnelReflectance(std::cos(32 * kPi / 180), 1.0, 1.4);        // ≈ 0.030
   const double sigma = std::sqrt(fresnel * (1 - fresnel) / static_cast<double>(rays));  // ≈ 8.5e-4
   EXPECT_NEAR(d.surfaceReflectance.mean, fresnel, 4 * sigma);
   const std::size_t specular = bins.flatIndex(6, 18);
-  EXPECT_DOUBLE_EQ(d.perSteradian.surface[specular].mean * bins.solidAngleSr(6), d.surfaceReflectance.mean);
+  EXPECT_DOUBLE_EQ(d.perSteradian.surface[specular].mean * bins.solidAngleSr(6),
+                   d.surfaceReflectance.mean);
   // In the cut: mean over the two bins either side of φ = 0 → half the bin's per-sr value.
   const InPlaneCut& cut = d.inPlanePerSteradian;
   EXPECT_NEAR(cut.signedPolarDeg[18 + 6], 32.5, 1e-12);
@@ -162,8 +168,8 @@ TEST(ReflectionDistribution, SmoothSurfaceReflectsIntoTheSpecularBinOnThePositiv
   EXPECT_EQ(cut.surface[17 - 6].mean, 0.0);  // −32.5°: toward the source
   // Total = surface + subsurface, bin by bin.
   for (std::size_t b = 0; b < bins.count(); ++b)
-    EXPECT_NEAR(d.perSteradian.total[b].mean, d.perSteradian.surface[b].mean + d.perSteradian.subsurface[b].mean,
-                1e-12);
+    EXPECT_NEAR(d.perSteradian.total[b].mean,
+                d.perSteradian.surface[b].mean + d.perSteradian.subsurface[b].mean, 1e-12);
 }
 
 TEST(ReflectionDistribution, MeanOverWavelengthsAveragesBinByBin) {
@@ -176,7 +182,8 @@ TEST(ReflectionDistribution, MeanOverWavelengthsAveragesBinByBin) {
   lost.end = PathEnd::Absorbed;
   for (int i = 0; i < 4; ++i) a.record(i < 2 ? up : lost);  // 1/2 in bin 0 at λ1
   for (int i = 0; i < 4; ++i) b.record(i < 1 ? up : lost);  // 1/4 at λ2
-  const ReflectionDistribution mean = meanOverWavelengths({reflectionDistribution(a), reflectionDistribution(b)});
+  const ReflectionDistribution mean =
+      meanOverWavelengths({reflectionDistribution(a), reflectionDistribution(b)});
   const std::size_t bin = a.directionBin(up.exitDirection);  // polar bin 0
   const double omega = DirectionBins(2, 2).solidAngleSr(0);
   EXPECT_NEAR(mean.perSteradian.subsurface[bin].mean, 0.375 / omega, 1e-12);
@@ -206,10 +213,13 @@ TEST(TransmissionProfile, CosineTransmissionGivesTheBinAveragedCosine) {
   double total = 0;
   for (std::size_t i = 0; i < 18; ++i) {
     const double perSr = 0.5 * bins.projectedSolidAngleSr(i) / bins.solidAngleSr(i) / kPi;
-    EXPECT_NEAR(profile.perSteradian[i].mean, perSr, 4 * profile.perSteradian[i].standardError) << i;
+    EXPECT_NEAR(profile.perSteradian[i].mean, perSr, 4 * profile.perSteradian[i].standardError)
+        << i;
     const double relative = bins.projectedSolidAngleSr(i) / bins.solidAngleSr(i) / first;
     if (i > 0) {
-      EXPECT_NEAR(profile.relativeToNormal[i].mean, relative, 4 * profile.relativeToNormal[i].standardError) << i;
+      EXPECT_NEAR(profile.relativeToNormal[i].mean, relative,
+                  4 * profile.relativeToNormal[i].standardError)
+          << i;
     }
     total += profile.perSteradian[i].mean * profile.solidAngleSr[i];
   }
@@ -233,8 +243,9 @@ TEST(TransmissionProfile, ClearMatchedEpidermisTransmitsEverything) {
   run.walk.belowRefractiveIndex = 1.4;
   run.tally.polarBins = 18;
   const TransmissionProfile matched = transmissionProfile(simulateSkin(clearOptics(1.4), run));
-  const double expected = 1 - std::pow(0.4 / 2.4, 2);                                    // 0.97222
-  const double sigma = std::sqrt(expected * (1 - expected) / static_cast<double>(rays));  // ≈ 8.2e-4
+  const double expected = 1 - std::pow(0.4 / 2.4, 2);  // 0.97222
+  const double sigma =
+      std::sqrt(expected * (1 - expected) / static_cast<double>(rays));  // ≈ 8.2e-4
   EXPECT_NEAR(matched.transmittance.mean, expected, 4 * sigma);
   // At 40° incidence nothing leaves near the normal: no normalisation, a clear error.
   run = smoothRun(40, 1000);
@@ -261,7 +272,8 @@ TEST(RadialProfile, DiffuseJunctionUnderAClearStackFollowsTheClosedForm) {
     const double area = annulusAreaCm2(profile.innerCm[i], profile.outerCm[i]);
     integral += profile.perCm2[i].mean * area;
     observed.push_back(profile.fraction[i].mean * static_cast<double>(rays));
-    expected.push_back((cumulative(profile.outerCm[i]) - cumulative(profile.innerCm[i])) * static_cast<double>(rays));
+    expected.push_back((cumulative(profile.outerCm[i]) - cumulative(profile.innerCm[i])) *
+                       static_cast<double>(rays));
   }
   observed.push_back(profile.beyondMaxRadius.mean * static_cast<double>(rays));
   expected.push_back((1 - cumulative(maxRadiusCm)) * static_cast<double>(rays));  // ≈ 3.8 %
@@ -272,7 +284,8 @@ TEST(RadialProfile, DiffuseJunctionUnderAClearStackFollowsTheClosedForm) {
   EXPECT_DOUBLE_EQ(profile.outerCm.back(), maxRadiusCm);
   EXPECT_EQ(profile.innerCm.front(), 0.0);
   // Near the centre, R(0) → 1/(π D²) = 88.4 cm⁻²: the first annulus (r < 6 mm·0.01) within 4σ.
-  const double firstExpected = (cumulative(profile.outerCm[0])) / annulusAreaCm2(0, profile.outerCm[0]);
+  const double firstExpected =
+      (cumulative(profile.outerCm[0])) / annulusAreaCm2(0, profile.outerCm[0]);
   EXPECT_NEAR(profile.perCm2[0].mean, firstExpected, 4 * profile.perCm2[0].standardError);
   EXPECT_THROW(radialProfile(SkinTally()), std::invalid_argument);
 }

@@ -1,8 +1,6 @@
 // ExitTable (skin/exit_table.h): the table mode agrees with the exact walk for specimen S1, its
 // sampler reproduces its own stored distributions (chi-square), building is deterministic at any
 // thread count, and the file format rejects every kind of damage.
-#include "skin/exit_table.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,13 +8,14 @@
 #include <iterator>
 #include <vector>
 
-#include "skin/skin_simulation.h"
-#include "skin/spectral_database.h"
-#include "skin/specimen.h"
-#include "tests/support/chi2.h"
-#include "tests/support/test_spectra.h"
 #include "skin/core/constants.h"
 #include "skin/core/thread_limit.h"
+#include "skin/exit_table.h"
+#include "skin/skin_simulation.h"
+#include "skin/specimen.h"
+#include "skin/spectral_database.h"
+#include "tests/support/chi2.h"
+#include "tests/support/test_spectra.h"
 
 using hylios::kPi;
 
@@ -24,7 +23,6 @@ using namespace hylios;
 using namespace hylios::skin;
 
 namespace {
-
 
 using hylios::test::spectra;
 
@@ -56,7 +54,8 @@ struct Outcomes {
     const double r = std::hypot(p.exitOffsetXCm, p.exitOffsetYCm);
     radiusSum += r;
     radiusSquares += r * r;
-    polar[static_cast<std::size_t>(std::min(static_cast<int>(-p.exitDirection.z * kPolarBins), kPolarBins - 1))]++;
+    polar[static_cast<std::size_t>(
+        std::min(static_cast<int>(-p.exitDirection.z * kPolarBins), kPolarBins - 1))]++;
   }
   Estimate fraction(std::uint64_t count, std::uint64_t of) const {
     const double n = static_cast<double>(of), p = static_cast<double>(count) / n;
@@ -70,11 +69,12 @@ struct Outcomes {
 
 /// |a − b| within 4 combined σ, σ_table added for the table's own statistical error.
 void expectAgree(const char* what, Estimate walk, Estimate table, double tableError) {
-  const double sigma = std::sqrt(walk.standardError * walk.standardError +
-                                 table.standardError * table.standardError + tableError * tableError);
+  const double sigma =
+      std::sqrt(walk.standardError * walk.standardError +
+                table.standardError * table.standardError + tableError * tableError);
   EXPECT_LT(std::fabs(walk.mean - table.mean), 4 * sigma)
-      << what << ": walk " << walk.mean << " ± " << walk.standardError << ", table " << table.mean << " ± "
-      << table.standardError << " (table's own error " << tableError << ")";
+      << what << ": walk " << walk.mean << " ± " << walk.standardError << ", table " << table.mean
+      << " ± " << table.standardError << " (table's own error " << tableError << ")";
 }
 
 }  // namespace
@@ -92,7 +92,8 @@ TEST_P(TableAgreesWithWalk, S1) {
   settings.raysPerBin = 4000;
   const ExitTable table = ExitTable::build(walk, settings);
   // The table's own error: bounded by the largest per-bin standard error (the sampled mixture of
-  // bins has weights summing to 1); for fractions of subsurface exits by 0.5/√(fewest exits in a bin).
+  // bins has weights summing to 1); for fractions of subsurface exits by 0.5/√(fewest exits in a
+  // bin).
   double binError = 0, radiusError = 0, fewestExits = 1e300;
   for (int k = 0; k < table.bins(); ++k) {
     const BinStatistics s = table.statistics(k);
@@ -111,11 +112,13 @@ TEST_P(TableAgreesWithWalk, S1) {
       w.add(walk.trace(incident, a));
       t.add(table.sample(incident, b));
     }
-    expectAgree("reflectance", w.fraction(w.reflected, w.rays), t.fraction(t.reflected, t.rays), binError);
-    expectAgree("subsurface", w.fraction(w.subsurface, w.rays), t.fraction(t.subsurface, t.rays), binError);
+    expectAgree("reflectance", w.fraction(w.reflected, w.rays), t.fraction(t.reflected, t.rays),
+                binError);
+    expectAgree("subsurface", w.fraction(w.subsurface, w.rays), t.fraction(t.subsurface, t.rays),
+                binError);
     expectAgree("mean exit radius (cm)", w.meanRadius(), t.meanRadius(), radiusError);
-    expectAgree("forward exits", w.fraction(w.forward, w.subsurface), t.fraction(t.forward, t.subsurface),
-                exitFractionError);
+    expectAgree("forward exits", w.fraction(w.forward, w.subsurface),
+                t.fraction(t.forward, t.subsurface), exitFractionError);
     for (int j = 0; j < Outcomes::kPolarBins; ++j)
       expectAgree("exit polar bin", w.fraction(w.polar[static_cast<std::size_t>(j)], w.subsurface),
                   t.fraction(t.polar[static_cast<std::size_t>(j)], t.subsurface),
@@ -151,7 +154,8 @@ TEST_F(ExitTableSampling, ReproducesTheStoredDistributions) {
   const std::vector<double> radial = table.radialDistribution(bin);
   const std::vector<double> azimuth = table.offsetAzimuthDistribution(bin);
   const std::vector<double> polar = table.exitPolarDistribution(bin);
-  std::vector<double> radialSeen(radial.size()), azimuthSeen(azimuth.size()), polarSeen(polar.size()), within(10);
+  std::vector<double> radialSeen(radial.size()), azimuthSeen(azimuth.size()),
+      polarSeen(polar.size()), within(10);
   const int n = 200000;
   int subsurface = 0, positiveSide = 0;
   Rng rng(5);
@@ -161,18 +165,24 @@ TEST_F(ExitTableSampling, ReproducesTheStoredDistributions) {
     ++subsurface;
     const double r = std::hypot(p.exitOffsetXCm, p.exitOffsetYCm);
     int cell = 0;
-    while (cell + 1 < static_cast<int>(radial.size()) && r >= table.radialCellUpperCm(bin, cell)) ++cell;
+    while (cell + 1 < static_cast<int>(radial.size()) && r >= table.radialCellUpperCm(bin, cell))
+      ++cell;
     ASSERT_GE(r, table.radialCellLowerCm(cell));
     radialSeen[static_cast<std::size_t>(cell)]++;
     if (cell >= 1 && cell + 1 < static_cast<int>(radial.size())) {
       const double lo = table.radialCellLowerCm(cell), hi = table.radialCellUpperCm(bin, cell);
-      within[std::min<std::size_t>(9, static_cast<std::size_t>(std::log(r / lo) / std::log(hi / lo) * 10))]++;
+      within[std::min<std::size_t>(
+          9, static_cast<std::size_t>(std::log(r / lo) / std::log(hi / lo) * 10))]++;
     }
     double rel = std::atan2(p.exitOffsetYCm, p.exitOffsetXCm) - phiT;
     rel = std::remainder(rel, 2 * kPi);
     if (rel > 0) ++positiveSide;
-    azimuthSeen[std::min(azimuth.size() - 1, static_cast<std::size_t>(std::fabs(rel) / kPi * static_cast<double>(azimuth.size())))]++;
-    polarSeen[std::min(polar.size() - 1, static_cast<std::size_t>(-p.exitDirection.z * static_cast<double>(polar.size())))]++;
+    azimuthSeen[std::min(
+        azimuth.size() - 1,
+        static_cast<std::size_t>(std::fabs(rel) / kPi * static_cast<double>(azimuth.size())))]++;
+    polarSeen[std::min(
+        polar.size() - 1,
+        static_cast<std::size_t>(-p.exitDirection.z * static_cast<double>(polar.size())))]++;
   }
   auto expected = [&](const std::vector<double>& f, double total) {
     std::vector<double> e;
@@ -180,12 +190,13 @@ TEST_F(ExitTableSampling, ReproducesTheStoredDistributions) {
     return e;
   };
   const double total = subsurface;
-  for (auto [name, seen, probability] :
-       {std::tuple{"radial", &radialSeen, &radial}, std::tuple{"offset azimuth", &azimuthSeen, &azimuth},
-        std::tuple{"exit polar", &polarSeen, &polar}}) {
+  for (auto [name, seen, probability] : {std::tuple{"radial", &radialSeen, &radial},
+                                         std::tuple{"offset azimuth", &azimuthSeen, &azimuth},
+                                         std::tuple{"exit polar", &polarSeen, &polar}}) {
     const auto result = test::chi2FromCounts(*seen, expected(*probability, total));
     EXPECT_TRUE(result.problem.empty()) << name << ": " << result.problem;
-    EXPECT_GT(result.pValue, 1e-4) << name << ": chi2 " << result.statistic << ", dof " << result.degreesOfFreedom;
+    EXPECT_GT(result.pValue, 1e-4)
+        << name << ": chi2 " << result.statistic << ", dof " << result.degreesOfFreedom;
   }
   double inCells = 0;
   for (double c : within) inCells += c;
@@ -202,19 +213,23 @@ TEST_F(ExitTableSampling, ReproducesTheStoredDistributions) {
 TEST_F(ExitTableSampling, InterpolatesLinearlyBetweenBinCentres) {
   const ExitTable& table = *table_;
   const double f = 0.3, mu = (1 - f) * table.binCosine(1) + f * table.binCosine(2);
-  const double expected = (1 - f) * table.statistics(1).subsurface.mean + f * table.statistics(2).subsurface.mean;
+  const double expected =
+      (1 - f) * table.statistics(1).subsurface.mean + f * table.statistics(2).subsurface.mean;
   const int n = 200000;
   int subsurface = 0;
   Rng rng(9);
   for (int i = 0; i < n; ++i)
-    subsurface += table.sampleEntered({std::sqrt(1 - mu * mu), 0, mu}, rng).end == PathEnd::SubsurfaceReflection;
-  EXPECT_LT(std::fabs(static_cast<double>(subsurface) / n - expected), 4 * std::sqrt(expected * (1 - expected) / n));
+    subsurface += table.sampleEntered({std::sqrt(1 - mu * mu), 0, mu}, rng).end ==
+                  PathEnd::SubsurfaceReflection;
+  EXPECT_LT(std::fabs(static_cast<double>(subsurface) / n - expected),
+            4 * std::sqrt(expected * (1 - expected) / n));
 }
 
 TEST_F(ExitTableSampling, AbsorptionAndSubsurfaceAddUpPerBin) {
   for (int k = 0; k < table_->bins(); ++k) {
     const BinStatistics s = table_->statistics(k);
-    EXPECT_NEAR(s.subsurface.mean + s.absorbed.mean + s.transmitted.mean + s.eventLimited.mean, 1.0, 1e-12);
+    EXPECT_NEAR(s.subsurface.mean + s.absorbed.mean + s.transmitted.mean + s.eventLimited.mean, 1.0,
+                1e-12);
     EXPECT_EQ(s.rays, 6000u);
     EXPECT_GT(s.meanExitRadiusCm.mean, 0);
   }
@@ -244,7 +259,8 @@ TEST(ExitTableFile, BuildIsTheSameAtAnyThreadCountAndRoundTrips) {
   ASSERT_TRUE(read) << why;
   Rng a(3), b(3);
   for (int i = 0; i < 1000; ++i) {
-    const SkinPath x = table.sample({0.3, 0, std::sqrt(0.91)}, a), y = read->sample({0.3, 0, std::sqrt(0.91)}, b);
+    const SkinPath x = table.sample({0.3, 0, std::sqrt(0.91)}, a),
+                   y = read->sample({0.3, 0, std::sqrt(0.91)}, b);
     ASSERT_EQ(x.end, y.end);
     ASSERT_EQ(x.exitOffsetXCm, y.exitOffsetXCm);
     ASSERT_EQ(x.exitDirection.z, y.exitDirection.z);
@@ -269,11 +285,12 @@ TEST(ExitTableFile, DamagedStaleOrForeignFilesAreRejected) {
     EXPECT_FALSE(ExitTable::read(bad, walk, settings, &whyNot)) << reason;
     EXPECT_FALSE(whyNot.empty()) << reason;
   };
-  for (std::size_t size : {std::size_t{0}, std::size_t{7}, std::size_t{39}, std::size_t{40}, bytes.size() / 2, bytes.size() - 1})
+  for (std::size_t size : {std::size_t{0}, std::size_t{7}, std::size_t{39}, std::size_t{40},
+                           bytes.size() / 2, bytes.size() - 1})
     rejects(bytes.substr(0, size), "truncated");
   rejects(bytes + "x", "trailing byte");
-  for (std::size_t at : {std::size_t{3}, std::size_t{9}, std::size_t{17}, std::size_t{25}, std::size_t{33}, std::size_t{41},
-                         bytes.size() / 2, bytes.size() - 1}) {
+  for (std::size_t at : {std::size_t{3}, std::size_t{9}, std::size_t{17}, std::size_t{25},
+                         std::size_t{33}, std::size_t{41}, bytes.size() / 2, bytes.size() - 1}) {
     std::string flipped = bytes;
     flipped[at] = static_cast<char>(flipped[at] ^ 0x10);
     rejects(flipped, "bit flip");
@@ -281,7 +298,8 @@ TEST(ExitTableFile, DamagedStaleOrForeignFilesAreRejected) {
   // A stale table: the same file read for other inputs (one coefficient changed, other settings).
   SkinOptics changed = walk.optics();
   changed.layers[1].muATotal_perCm *= 1.001;
-  EXPECT_NE(ExitTable::key(changed, walk.options(), settings), ExitTable::key(walk.optics(), walk.options(), settings));
+  EXPECT_NE(ExitTable::key(changed, walk.options(), settings),
+            ExitTable::key(walk.optics(), walk.options(), settings));
   EXPECT_FALSE(ExitTable::read(good, SkinWalk(changed), settings));
   ExitTableSettings moreRays = settings;
   moreRays.raysPerBin += 1;
@@ -331,7 +349,8 @@ TEST(ExitTableFile, KeyCoversEveryInput) {
   withSettings([](ExitTableSettings& s) { s.polarBins += 1; });
   withSettings([](ExitTableSettings& s) { s.tabulatedMelanosomes = !s.tabulatedMelanosomes; });
   std::sort(keys.begin(), keys.end());
-  EXPECT_EQ(std::unique(keys.begin(), keys.end()), keys.end()) << "two different inputs gave the same key";
+  EXPECT_EQ(std::unique(keys.begin(), keys.end()), keys.end())
+      << "two different inputs gave the same key";
 }
 
 TEST(ExitTableFile, BadSettingsAreClearErrors) {

@@ -2,8 +2,6 @@
 // 0.01°, 1e-6 rad, 1 rad and 10 rad; the closed-form CDF against quadrature; the density against
 // the paper's unnormalised target; the paper's own rejection loop against our density; the mean
 // against quadrature (≈ 2θo for small θo); θo = 0 and the u end points.
-#include "skin/sampling/exponential_polar_sampling.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,9 +9,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "skin/core/random.h"
-#include "tests/support/chi2.h"
 #include "skin/core/constants.h"
+#include "skin/core/random.h"
+#include "skin/sampling/exponential_polar_sampling.h"
+#include "tests/support/chi2.h"
 
 using hylios::kPi;
 
@@ -74,7 +73,8 @@ TEST_P(ExponentialPolarChi2, SamplesMatchDensityAndMean) {
   const auto edges = test::equalProbabilityEdges(density, 0.0, end, 50);
   EXPECT_TRUE(test::chi2Accepts(test::chi2Test1D(thetas, density, edges))) << "θo = " << t;
   // Mean and its standard error from quadrature of the density.
-  const double mean = test::integrate([&](double x) { return x * density(x); }, 0.0, end, 1e-15, 64);
+  const double mean =
+      test::integrate([&](double x) { return x * density(x); }, 0.0, end, 1e-15, 64);
   const double second =
       test::integrate([&](double x) { return x * x * density(x); }, 0.0, end, 1e-15, 64);
   const double standardError = std::sqrt((second - mean * mean) / static_cast<double>(n));

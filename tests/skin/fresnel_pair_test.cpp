@@ -1,12 +1,11 @@
 // FresnelPair against skin/fresnel.h's general formula: reflectance, transmitted cosine and the
 // refracted direction, both ways through 1.4/1.7 (melanosome walls) and 1/1.55 (the skin surface).
-#include "skin/fresnel_pair.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "skin/fresnel.h"
+#include "skin/fresnel_pair.h"
 
 namespace hylios::skin {
 namespace {

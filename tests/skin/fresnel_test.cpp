@@ -1,16 +1,15 @@
 // Fresnel reflectance and the reflect/refract helpers against hand-computed values.
-#include "skin/fresnel.h"
-#include "skin/core/constants.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "skin/core/constants.h"
+#include "skin/fresnel.h"
 
 using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
-
 
 TEST(FresnelTest, NormalIncidenceIsSquaredIndexContrast) {
   // ((n1 - n2) / (n1 + n2))^2: air -> glass (1.5) gives (0.5 / 2.5)^2 = 0.04.
@@ -23,7 +22,8 @@ TEST(FresnelTest, NormalIncidenceIsSquaredIndexContrast) {
 TEST(FresnelTest, FortyFiveDegreesAirToGlassMatchesSAndPFormulas) {
   // cos i = 1/sqrt2, sin t = sin i / 1.5 so cos t = sqrt(7/9) = sqrt7/3. Then
   // r_s = (cos i - 1.5 cos t) / (cos i + 1.5 cos t) = (sqrt2 - sqrt7) / (sqrt2 + sqrt7) = -0.303337
-  // and at 45 deg r_p = r_s^2 = 0.0920134, so R = (r_s^2 + r_p^2) / 2 = (0.0920134 + 0.0084665) / 2.
+  // and at 45 deg r_p = r_s^2 = 0.0920134, so R = (r_s^2 + r_p^2) / 2 = (0.0920134 + 0.0084665)
+  // / 2.
   const double rs = (std::sqrt(2.0) - std::sqrt(7.0)) / (std::sqrt(2.0) + std::sqrt(7.0));
   const double expected = 0.5 * (rs * rs + rs * rs * rs * rs);
   EXPECT_NEAR(expected, 0.0502399, 1e-7);
@@ -41,7 +41,8 @@ TEST(FresnelTest, TotalInternalReflectionBeyondCriticalAngle) {
     EXPECT_EQ(f.cosTransmitted, 0.0);
   }
   EXPECT_LT(fresnelReflectance(std::cos(critical - 1e-3), 1.5, 1.0), 1.0);
-  // 30 deg inside glass: sin t = 0.75, cos t = sqrt(7)/4; R = 0.0551902 (s/p by hand, Python check).
+  // 30 deg inside glass: sin t = 0.75, cos t = sqrt(7)/4; R = 0.0551902 (s/p by hand, Python
+  // check).
   EXPECT_NEAR(fresnelReflectance(std::cos(kPi / 6), 1.5, 1.0), 0.0551902, 1e-6);
 }
 

@@ -1,7 +1,5 @@
 // Henyey–Greenstein sampling: chi-square for g = 0, 0.5, 0.9, −0.7, 0.999, hand values, the mean
 // cosine, stability near g = 0 and |g| = 1, end points.
-#include "skin/sampling/henyey_greenstein.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +7,7 @@
 #include <vector>
 
 #include "skin/core/random.h"
+#include "skin/sampling/henyey_greenstein.h"
 #include "tests/support/chi2.h"
 
 namespace hylios::skin {

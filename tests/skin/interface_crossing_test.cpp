@@ -1,11 +1,10 @@
 // Interface crossing: Fresnel decision with one uniform, directions, and random-number use.
-#include "skin/interface_crossing.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "skin/fresnel.h"
+#include "skin/interface_crossing.h"
 
 namespace hylios::skin {
 namespace {

@@ -1,8 +1,6 @@
 // The generic layered slab (MCML's problem) against every published number in
 // tests/data/validation/mc_benchmarks_published.csv, against closed forms for non-scattering
 // plates, and for energy balance, determinism and thread-count independence.
-#include "skin/layered_slab.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,9 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "skin/fresnel.h"
 #include "skin/core/constants.h"
 #include "skin/core/thread_limit.h"
+#include "skin/fresnel.h"
+#include "skin/layered_slab.h"
 
 using hylios::kPi;
 
@@ -76,7 +75,7 @@ std::vector<std::string> split(const std::string& text, const std::string& separ
 }
 
 std::map<std::string, std::string> toRecord(const std::vector<std::string>& header,
-                                             const std::vector<std::string>& fields) {
+                                            const std::vector<std::string>& fields) {
   std::map<std::string, std::string> record;
   for (std::size_t i = 0; i < header.size(); ++i) record[header[i]] = fields.at(i);
   return record;
@@ -151,7 +150,7 @@ Estimate ourQuantity(BenchmarkRunner& runner, const std::string& caseId, const s
                                   r.diffuseReflectance.standardError};
   if (token == "Rd")
     return quantityText.find("as tabulated") != std::string::npos ? totalReflectance
-                                                                   : r.diffuseReflectance;
+                                                                  : r.diffuseReflectance;
   if (token == "UR1" || token == "URU") return totalReflectance;
   if (token == "Tt" || token == "UT1" || token == "UTU") return r.transmittance;
   if (token == "A") return r.absorptance;
@@ -233,8 +232,8 @@ TEST(LayeredSlabTest, AgreesWithEveryPublishedBenchmark) {
   const auto rows = readBenchmarks();
   ASSERT_EQ(rows.size(), 35u);
   BenchmarkRunner runner;
-  std::printf("%-30s %12s %10s %12s %10s %9s %7s\n", "case quantity", "ours", "sigma",
-              "published", "sigma", "allow", "z");
+  std::printf("%-30s %12s %10s %12s %10s %9s %7s\n", "case quantity", "ours", "sigma", "published",
+              "sigma", "allow", "z");
   for (const auto& row : rows) {
     for (const Check& c : checksForRow(runner, row)) {
       const double sigma = std::hypot(c.ours.standardError, c.publishedSigma);
@@ -290,8 +289,9 @@ TEST(LayeredSlabTest, TwoGlassLayersMatchAddingRule) {
   const SlabResult result = simulateLayeredSlab(stack, options);
   // sigma = sqrt(T (1 - T) / N) = 5.8e-4; tolerance 4 sigma.
   EXPECT_NEAR(result.transmittance.mean, expectedT, 4 * result.transmittance.standardError);
-  EXPECT_NEAR(result.specularReflectance + result.diffuseReflectance.mean + result.transmittance.mean,
-              1.0, 1e-12);
+  EXPECT_NEAR(
+      result.specularReflectance + result.diffuseReflectance.mean + result.transmittance.mean, 1.0,
+      1e-12);
 }
 
 // ---- Energy balance ----
@@ -300,8 +300,11 @@ std::vector<SlabProblem> energyBalanceProblems() {
   SlabProblem mismatched;  // layers of different index, TIR inside, oblique beam
   mismatched.refractiveIndexAbove = 1.0;
   mismatched.refractiveIndexBelow = 1.33;
-  mismatched.layers = {{1.55, 0.5, 50, 0.8, 0.01}, {1.0, 0, 0, 0, 0.02}, {1.4, 2, 20, -0.3, 0.05},
-                       {1.37, 0.1, 10, 0.95, 0.0}, {1.45, 1, 30, 0.5, kInf}};
+  mismatched.layers = {{1.55, 0.5, 50, 0.8, 0.01},
+                       {1.0, 0, 0, 0, 0.02},
+                       {1.4, 2, 20, -0.3, 0.05},
+                       {1.37, 0.1, 10, 0.95, 0.0},
+                       {1.45, 1, 30, 0.5, kInf}};
   mismatched.incidenceAngleDeg = 75;
   return {mcmlThreeLayerSample(), problemForCase("T6.2-mcml"), mismatched};
 }
@@ -405,7 +408,8 @@ TEST(LayeredSlabTest, UnscatteredBeamThroughMatchedSlabIsBeerLambert) {
   options.photons = 100000;
   const SlabResult r = simulateLayeredSlab(slab, options);
   const double expected = std::exp(-0.5 / std::cos(40.0 * kPi / 180.0));
-  EXPECT_NEAR(r.unscatteredTransmittance.mean, expected, 4 * r.unscatteredTransmittance.standardError);
+  EXPECT_NEAR(r.unscatteredTransmittance.mean, expected,
+              4 * r.unscatteredTransmittance.standardError);
 }
 
 // ---- Diffuse incidence ----
@@ -437,7 +441,8 @@ TEST(LayeredSlabTest, DiffuseEntryCosineFollowsItsDensityChiSquare) {
   EXPECT_NEAR(walker.specularReflectance(), 0.0768115, 1e-6);
   SlabProblem fromDense = singleLayer(1.4, {1.0, 1, 1, 0, 1}, 1.0);
   fromDense.diffuseIncidence = true;
-  EXPECT_NEAR(SlabWalker(fromDense, AbsorptionScheme::Analog).specularReflectance(), 0.528985, 1e-6);
+  EXPECT_NEAR(SlabWalker(fromDense, AbsorptionScheme::Analog).specularReflectance(), 0.528985,
+              1e-6);
 }
 
 // ---- Determinism and validation ----

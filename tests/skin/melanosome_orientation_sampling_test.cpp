@@ -1,23 +1,21 @@
 // Melanosome orientation (Eq. 8): chi-square of (cos α, β) about several ray directions for a
 // Table 1 melanosome, a sphere and c/a = 20; hand values of the density and its inversion; the
 // link between χ1, χ2 and the exact silhouette areas; end points.
-#include "skin/sampling/melanosome_orientation_sampling.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "skin/core/random.h"
-#include "tests/support/chi2.h"
 #include "skin/core/constants.h"
+#include "skin/core/random.h"
+#include "skin/sampling/melanosome_orientation_sampling.h"
+#include "tests/support/chi2.h"
 
 using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
-
 
 const ProlateSpheroid kTableOneMelanosome{0.085, 0.205};  // 0.17 × 0.41 µm full axes (Table 1)
 const ProlateSpheroid kSphere{0.1, 0.1};
@@ -31,9 +29,9 @@ TEST(MelanosomeOrientation, DensityByHand) {
   EXPECT_NEAR(melanosomeAxisCosDensity(s, 0.5), 0.5, 1e-15);
   EXPECT_EQ(melanosomeAxisCosDensity(s, 1.5), 0.0);
   for (const ProlateSpheroid& p : {kTableOneMelanosome, kSphere, kNeedle}) {
-    EXPECT_NEAR(test::integrate([&](double mu) { return melanosomeAxisCosDensity(p, mu); }, -1.0,
-                                1.0),
-                1.0, 1e-12);
+    EXPECT_NEAR(
+        test::integrate([&](double mu) { return melanosomeAxisCosDensity(p, mu); }, -1.0, 1.0), 1.0,
+        1e-12);
   }
   // A sphere has no preferred orientation: cos α uniform.
   EXPECT_NEAR(melanosomeAxisCosDensity(kSphere, 0.3), 0.5, 1e-15);
@@ -85,20 +83,21 @@ TEST_P(MelanosomeOrientationChi2, AxisCosineAndAzimuthMatchEquationEight) {
   const auto density = [&](double mu, double) {
     return melanosomeAxisCosDensity(c.spheroid, mu) / (2 * kPi);
   };
-  EXPECT_TRUE(test::chi2Accepts(test::chi2Test2D(mus, betas, density,
-                                                 test::uniformEdges(-1.0, 1.0, 20),
-                                                 test::uniformEdges(0.0, 2 * kPi, 12))));
+  EXPECT_TRUE(
+      test::chi2Accepts(test::chi2Test2D(mus, betas, density, test::uniformEdges(-1.0, 1.0, 20),
+                                         test::uniformEdges(0.0, 2 * kPi, 12))));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SpheroidsAndRays, MelanosomeOrientationChi2,
-    ::testing::Values(OrientationCase{kTableOneMelanosome, {0, 0, 1}},
-                      OrientationCase{kTableOneMelanosome, {0.48, -0.6, 0.64}},
-                      OrientationCase{kNeedle, {0, 0, -1}}, OrientationCase{kNeedle, {1, 2, -0.5}},
-                      OrientationCase{kSphere, {0.3, 0.3, 0.9}}));
+INSTANTIATE_TEST_SUITE_P(SpheroidsAndRays, MelanosomeOrientationChi2,
+                         ::testing::Values(OrientationCase{kTableOneMelanosome, {0, 0, 1}},
+                                           OrientationCase{kTableOneMelanosome, {0.48, -0.6, 0.64}},
+                                           OrientationCase{kNeedle, {0, 0, -1}},
+                                           OrientationCase{kNeedle, {1, 2, -0.5}},
+                                           OrientationCase{kSphere, {0.3, 0.3, 0.9}}));
 
 TEST(MelanosomeOrientation, MeanAbsoluteCosine) {
-  // E|μ| = 2∫_0^1 m(c(1 − m) + a m) dm/(a + c) = (c + 2a)/(3(a + c)); Var|μ| <= 1/4 -> se <= 0.5/√n.
+  // E|μ| = 2∫_0^1 m(c(1 − m) + a m) dm/(a + c) = (c + 2a)/(3(a + c)); Var|μ| <= 1/4 -> se <=
+  // 0.5/√n.
   const ProlateSpheroid s = kNeedle;
   Rng rng(3);
   const int n = 400000;

@@ -4,8 +4,6 @@
 // Monte Carlo errors: a traced absorption frequency from M trials has σ = sqrt(p(1 − p)/M); the
 // table's p1 = mean of (1 − e^{−κL}) over its N samples has σ = sd(1 − e^{−κL})/√N; independent
 // estimates are compared within 4 combined σ = 4·sqrt(σ1² + σ2²).
-#include "skin/melanosome_path_lengths.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,14 +11,15 @@
 #include <thread>
 #include <vector>
 
-#include "tests/support/chi2.h"
 #include "skin/fresnel.h"
 #include "skin/fresnel_pair.h"
 #include "skin/melanosome_interaction.h"
+#include "skin/melanosome_path_lengths.h"
 #include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
+#include "tests/support/chi2.h"
 #include "tests/support/test_spectra.h"
 
 using namespace hylios::skin;
@@ -32,8 +31,11 @@ namespace {
 /// MelanosomeLayer's constants as the pre-refactor class held them (a, c in one unit).
 struct OldMelanosome {
   OldMelanosome(double a, double c, double muA, double nLayer, double nMelanin)
-      : aspect_(c / a), inverseAspect_(a / c), muA_perMinorAxis_(muA * a),
-        entering_(nLayer, nMelanin), leaving_(nMelanin, nLayer) {}
+      : aspect_(c / a),
+        inverseAspect_(a / c),
+        muA_perMinorAxis_(muA * a),
+        entering_(nLayer, nMelanin),
+        leaving_(nMelanin, nLayer) {}
   double aspect_, inverseAspect_, muA_perMinorAxis_;
   FresnelPair entering_, leaving_;
 };
@@ -89,7 +91,8 @@ Estimate tableAbsorption(const MelanosomePathLengths& table, double kappa) {
   return {table.absorptionProbability(kappa), s.standardError()};
 }
 
-Estimate tracedAbsorption(double aspect, double indexRatio, double kappa, int trials, std::uint64_t seed) {
+Estimate tracedAbsorption(double aspect, double indexRatio, double kappa, int trials,
+                          std::uint64_t seed) {
   const MelanosomeLayer layer(1.0, aspect, kappa, 1.0, indexRatio);  // a = 1: κ = μa·a
   Rng rng(seed);
   int absorbed = 0;
@@ -137,9 +140,11 @@ TEST(MelanosomePathLengths, TableAbsorptionMatchesTracedMelanosomes) {
         const Estimate traced = tracedAbsorption(aspect, ratio, kappa, 100000, 1000 + comparison++);
         const double sigma = std::hypot(fromTable.standardError, traced.standardError);
         EXPECT_NEAR(fromTable.mean, traced.mean, 4.0 * sigma)
-            << "γ = " << aspect << ", ρ = " << ratio << ", κ = " << kappa << ": table " << fromTable.mean
-            << " ± " << fromTable.standardError << ", traced " << traced.mean << " ± " << traced.standardError;
-        EXPECT_NEAR(table->survivalProbability(kappa), 1.0 - table->absorptionProbability(kappa), 1e-12);
+            << "γ = " << aspect << ", ρ = " << ratio << ", κ = " << kappa << ": table "
+            << fromTable.mean << " ± " << fromTable.standardError << ", traced " << traced.mean
+            << " ± " << traced.standardError;
+        EXPECT_NEAR(table->survivalProbability(kappa), 1.0 - table->absorptionProbability(kappa),
+                    1e-12);
       }
     }
   }
@@ -151,7 +156,8 @@ TEST(MelanosomePathLengths, MatchedSphereHasTheMeanChordOfASphere) {
   const Estimate mean = table.meanPathLength();
   // sd(ℓ) = sqrt(E[ℓ²] − 16/9) = sqrt(2 − 16/9) ≈ 0.471, so s.e. ≈ 0.0018 at N = 2^16.
   EXPECT_NEAR(mean.standardError, std::sqrt(2.0 - 16.0 / 9.0) / std::sqrt(65536.0), 2e-4);
-  EXPECT_NEAR(mean.mean, 4.0 / 3.0, 4.0 * mean.standardError) << mean.mean << " ± " << mean.standardError;
+  EXPECT_NEAR(mean.mean, 4.0 / 3.0, 4.0 * mean.standardError)
+      << mean.mean << " ± " << mean.standardError;
   EXPECT_EQ(table.reflectedAtEntryFraction(), 0.0);
 }
 
@@ -159,7 +165,8 @@ TEST(MelanosomePathLengths, MatchedSphereChordsFollowTheirDensity) {
   // ℓ = 2·sqrt(1 − r²) with r² uniform: P(ℓ ≤ x) = P(1 − r² ≤ x²/4) = x²/4, density x/2 on [0, 2].
   const MelanosomePathLengths table(1.0, 1.0, 20000);
   const auto density = [](double x) { return x >= 0 && x <= 2 ? 0.5 * x : 0.0; };
-  const auto result = hylios::test::chi2Test1D(table.pathLengths(), density, hylios::test::uniformEdges(0, 2, 40));
+  const auto result =
+      hylios::test::chi2Test1D(table.pathLengths(), density, hylios::test::uniformEdges(0, 2, 40));
   EXPECT_TRUE(hylios::test::chi2Accepts(result));
 }
 
@@ -170,7 +177,8 @@ TEST(MelanosomePathLengths, SmallCoefficientAbsorbsInProportionToTheMeanPath) {
   for (double length : table->pathLengths()) meanSquare += length * length;
   meanSquare /= static_cast<double>(table->sampleCount());
   const double kappa = 1e-6;
-  EXPECT_NEAR(table->absorptionProbability(kappa) / kappa, table->meanPathLength().mean, kappa * meanSquare);
+  EXPECT_NEAR(table->absorptionProbability(kappa) / kappa, table->meanPathLength().mean,
+              kappa * meanSquare);
   EXPECT_GT(table->meanPathLength().mean, 0.5);
 }
 
@@ -196,9 +204,11 @@ TEST(MelanosomePathLengths, CountsCombineAsIndependentMelanosomes) {
   EXPECT_DOUBLE_EQ(MelanosomePathLengths::absorptionByCount(0.25, 2), 1.0 - 0.75 * 0.75);
   EXPECT_EQ(MelanosomePathLengths::absorptionByCount(1.0, 4), 1.0);
   EXPECT_EQ(MelanosomePathLengths::absorptionByCount(1.0, 0), 0.0);
-  EXPECT_NEAR(MelanosomePathLengths::absorptionByCount(1e-12, 100), 1e-10, 1e-20);  // no cancellation
+  EXPECT_NEAR(MelanosomePathLengths::absorptionByCount(1e-12, 100), 1e-10,
+              1e-20);  // no cancellation
   EXPECT_THROW(MelanosomePathLengths::absorptionByCount(1.5, 2), std::invalid_argument);
-  EXPECT_NEAR(table->absorptionProbability(1e300, 3), 1.0 - std::pow(table->reflectedAtEntryFraction(), 3), 1e-12);
+  EXPECT_NEAR(table->absorptionProbability(1e300, 3),
+              1.0 - std::pow(table->reflectedAtEntryFraction(), 3), 1e-12);
 }
 
 TEST(MelanosomePathLengths, SharedTablesAreDeterministicAndThreadSafe) {
@@ -252,7 +262,8 @@ TEST(MelanosomeLayerTabulated, InteractionsAbsorbLikeTracedOnes) {
   EXPECT_NEAR(tabulated.tabulatedAbsorption(3), 1.0 - q * q * q, 1e-9);
   EXPECT_THROW(traced.tabulatedAbsorption(2), std::logic_error);
   EXPECT_THROW(tabulated.tabulatedAbsorption(5), std::invalid_argument);
-  const double expected = 0.7 * tabulated.tabulatedAbsorption(2) + 0.3 * tabulated.tabulatedAbsorption(3);
+  const double expected =
+      0.7 * tabulated.tabulatedAbsorption(2) + 0.3 * tabulated.tabulatedAbsorption(3);
   Rng tracedRng(5), tabulatedRng(6);
   const int trials = 100000;
   int tracedAbsorbed = 0, tabulatedAbsorbed = 0, metThree = 0;
@@ -266,10 +277,12 @@ TEST(MelanosomeLayerTabulated, InteractionsAbsorbLikeTracedOnes) {
       ASSERT_NEAR(dot(event.direction, event.direction), 1.0, 1e-12);
     }
   }
-  const double pTraced = tracedAbsorbed / double(trials), pTabulated = tabulatedAbsorbed / double(trials);
+  const double pTraced = tracedAbsorbed / double(trials),
+               pTabulated = tabulatedAbsorbed / double(trials);
   const double sigmaMet = std::sqrt(0.3 * 0.7 / trials);  // ≈ 0.0014
   EXPECT_NEAR(metThree / double(trials), 0.3, 4.0 * sigmaMet);
-  const double sigma = std::sqrt(expected * (1 - expected) / trials);  // ≈ 0.0016; the table's own is smaller
+  const double sigma =
+      std::sqrt(expected * (1 - expected) / trials);  // ≈ 0.0016; the table's own is smaller
   EXPECT_NEAR(pTabulated, expected, 4.0 * sigma);
   EXPECT_NEAR(pTraced, expected, 4.0 * std::sqrt(2.0) * sigma) << "table " << expected;
   EXPECT_GT(expected, 0.1);
@@ -283,7 +296,8 @@ TEST(SkinWalkTabulated, WholeWalksAgreeWithTracedMelanosomes) {
   // 30000 rays per run (σ_R ≤ 0.0029), independent seeds: σ_diff = sqrt(σ1² + σ2²).
   double largestMelanosomeAbsorptance = 0;
   for (const std::string name : {"S1", "S4"}) {
-    const Specimen specimen = loadSpecimen(name, std::string(HYLIOS_SOURCE_DIR) + "/scenes/specimens");
+    const Specimen specimen =
+        loadSpecimen(name, std::string(HYLIOS_SOURCE_DIR) + "/scenes/specimens");
     for (const double nm : {365.0, 550.0, 1100.0, 1650.0}) {
       const SkinOptics optics = computeSkinOptics(specimen, spectra(), nm);
       WalkRunOptions run;
@@ -296,12 +310,15 @@ TEST(SkinWalkTabulated, WholeWalksAgreeWithTracedMelanosomes) {
       const SkinTally tabulated = simulateSkin(optics, run);
       const auto compare = [&](Estimate a, Estimate b, const char* what) {
         const double sigma = std::hypot(a.standardError, b.standardError);
-        EXPECT_NEAR(a.mean, b.mean, 4.0 * sigma) << name << " " << nm << " nm " << what << ": traced " << a.mean
-                                                 << ", tabulated " << b.mean << ", σ " << sigma;
+        EXPECT_NEAR(a.mean, b.mean, 4.0 * sigma)
+            << name << " " << nm << " nm " << what << ": traced " << a.mean << ", tabulated "
+            << b.mean << ", σ " << sigma;
       };
       compare(traced.reflectance(), tabulated.reflectance(), "reflectance");
-      compare(traced.melanosomeAbsorptance(), tabulated.melanosomeAbsorptance(), "melanosome absorptance");
-      largestMelanosomeAbsorptance = std::max(largestMelanosomeAbsorptance, traced.melanosomeAbsorptance().mean);
+      compare(traced.melanosomeAbsorptance(), tabulated.melanosomeAbsorptance(),
+              "melanosome absorptance");
+      largestMelanosomeAbsorptance =
+          std::max(largestMelanosomeAbsorptance, traced.melanosomeAbsorptance().mean);
     }
   }
   EXPECT_GT(largestMelanosomeAbsorptance, 0.1);  // melanosomes matter in the cases compared

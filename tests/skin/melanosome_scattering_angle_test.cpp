@@ -1,11 +1,11 @@
 // θo(λ) of Algorithm 2 (Sec. 4.2.2): 5° to 780 nm, linear to 0 at 1400 nm, 0 beyond.
-#include "skin/melanosome_scattering_angle.h"
-#include "skin/core/constants.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
+
+#include "skin/core/constants.h"
+#include "skin/melanosome_scattering_angle.h"
 
 using hylios::kPi;
 

@@ -1,18 +1,17 @@
 // The walk's rejection samplers against the densities of the inversion samplers (chi-square), for
 // the paper's parameters and beyond; unit (cos, sin) pairs; the θo = 0 and bad-argument cases.
-#include "skin/sampling/polar_rejection_sampling.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
+#include "skin/core/constants.h"
 #include "skin/sampling/cosine_sampling.h"
 #include "skin/sampling/exponential_polar_sampling.h"
+#include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/sampling/surface_normal_sampling.h"
 #include "tests/support/chi2.h"
-#include "skin/core/constants.h"
 
 using hylios::kPi;
 
@@ -99,7 +98,8 @@ TEST(DiskSamplers, AzimuthIsUniformAndMalleyDirectionsAreCosineWeighted) {
     polars[static_cast<std::size_t>(i)] = std::acos(d.z);
   }
   const auto uniformAzimuth = [](double) { return 1.0 / (2.0 * kPi); };
-  EXPECT_TRUE(test::chi2Accepts(test::chi2Test1D(azimuths, uniformAzimuth, test::uniformEdges(-kPi, kPi, 60))));
+  EXPECT_TRUE(test::chi2Accepts(
+      test::chi2Test1D(azimuths, uniformAzimuth, test::uniformEdges(-kPi, kPi, 60))));
   const auto cosine = [](double t) { return cosinePolarDensity(t); };
   EXPECT_TRUE(test::chi2Accepts(
       test::chi2Test1D(polars, cosine, test::equalProbabilityEdges(cosine, 0.0, kHalfPi, 50))));

@@ -1,10 +1,10 @@
 // Rayleigh coefficient of the papillary dermis (Eq. 4–5): hand values and the λ⁻⁴ law.
-#include "skin/rayleigh_coefficient.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
+
+#include "skin/rayleigh_coefficient.h"
 
 namespace hylios::skin {
 namespace {

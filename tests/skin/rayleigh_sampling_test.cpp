@@ -1,22 +1,20 @@
 // Rayleigh polar-angle sampling (Sec. 4.2.1, Algorithm 1): chi-square against its density,
 // hand-computed inversions, the density's normalisation, and the u = 0 / 1 − ε end points.
-#include "skin/sampling/rayleigh_sampling.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "skin/core/random.h"
-#include "tests/support/chi2.h"
 #include "skin/core/constants.h"
+#include "skin/core/random.h"
+#include "skin/sampling/rayleigh_sampling.h"
+#include "tests/support/chi2.h"
 
 using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
-
 
 TEST(RayleighSampling, InversionByHand) {
   // F(μ) = (μ³ + 3μ + 4)/8: F(0) = 1/2, F(0.5) = (0.125 + 1.5 + 4)/8 = 0.703125,

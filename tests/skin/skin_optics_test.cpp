@@ -1,7 +1,5 @@
 // Per-layer optical state (Sec. 4.1–4.2): layer composition, sums, melanosome geometry,
 // refractive-index dispersion, with synthetic spectra (hand values) and with the real data.
-#include "skin/skin_optics.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 #include "skin/layer_composition.h"
 #include "skin/melanosome_scattering_angle.h"
 #include "skin/rayleigh_coefficient.h"
+#include "skin/skin_optics.h"
 
 namespace hylios::skin {
 namespace {
@@ -27,8 +26,8 @@ SpectralSource unitSpectra() {
 }
 
 TEST(LayerComposition, StratumCorneumHoldsTable2Values) {
-  const AbsorberConcentrations c = layerAbsorberConcentrations(specimen("S1"),
-                                                               Layer::StratumCorneum);
+  const AbsorberConcentrations c =
+      layerAbsorberConcentrations(specimen("S1"), Layer::StratumCorneum);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Keratin)], 0.65);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Water)], 0.35);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Lipid)], 0.35);
@@ -42,8 +41,8 @@ TEST(LayerComposition, StratumCorneumHoldsTable2Values) {
 
 TEST(LayerComposition, EpidermisHoldsColloidalMelaninAtMelanosomeConcentrations) {
   // S1: colloidal 0.8 % × (90 mg/mL eumelanin, 4 mg/mL pheomelanin) = 0.72 and 0.032 mg/mL.
-  const AbsorberConcentrations c = layerAbsorberConcentrations(specimen("S1"),
-                                                               Layer::StratumBasale);
+  const AbsorberConcentrations c =
+      layerAbsorberConcentrations(specimen("S1"), Layer::StratumBasale);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Eumelanin)], 0.72);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Pheomelanin)], 0.032);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Water)], 0.60);
@@ -58,8 +57,8 @@ TEST(LayerComposition, DermisHoldsBloodWeightedByBloodFraction) {
   // S1: 0.2 % blood; Hb 147 mg/mL split 75 % oxygenated: 0.002·147·0.75 = 0.2205 mg/mL HbO2,
   // 0.002·147·0.25 = 0.0735 mg/mL Hb; HbCO and MetHb 0.002·1.5 = 0.003; bilirubin 6e-6;
   // β-carotene 0.002·7e-5 = 1.4e-7 mg/mL.
-  const AbsorberConcentrations c = layerAbsorberConcentrations(specimen("S1"),
-                                                               Layer::PapillaryDermis);
+  const AbsorberConcentrations c =
+      layerAbsorberConcentrations(specimen("S1"), Layer::PapillaryDermis);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Oxyhemoglobin)], 0.2205);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Deoxyhemoglobin)], 0.0735);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Carboxyhemoglobin)], 0.003);
@@ -149,9 +148,10 @@ TEST(SkinOptics, RayleighOnlyInThePapillaryDermis) {
   }
   SkinOpticsOptions textbook;
   textbook.rayleigh.form = RayleighPolarizabilityForm::Textbook;
-  EXPECT_NEAR(computeSkinOptics(specimen("S2"), unitSpectra(), 500.0, textbook)
-                  [Layer::PapillaryDermis].muRayleigh_perCm,
-              1248.3, 0.1);
+  EXPECT_NEAR(
+      computeSkinOptics(specimen("S2"), unitSpectra(), 500.0, textbook)[Layer::PapillaryDermis]
+          .muRayleigh_perCm,
+      1248.3, 0.1);
 }
 
 TEST(SkinOptics, MeanScatteringAngleFollowsWavelength) {
@@ -213,8 +213,9 @@ TEST(MelanosomeOptics, NoMelanosomesNoAttenuationButGeometryKept) {
 }
 
 TEST(SkinOptics, RejectsBadSpectraAndWavelengths) {
-  const SpectralSource negative{[](Absorber a, double) { return a == Absorber::Lipid ? -1.0 : 1.0; },
-                                [](double) { return 1.33; }};
+  const SpectralSource negative{
+      [](Absorber a, double) { return a == Absorber::Lipid ? -1.0 : 1.0; },
+      [](double) { return 1.33; }};
   EXPECT_THROW(computeSkinOptics(specimen("S1"), negative, 500.0), SpectralDataError);
   const SpectralSource nan{[](Absorber, double) { return std::nan(""); },
                            [](double) { return 1.33; }};

@@ -1,18 +1,17 @@
 // The HyLIoS walk on stacks whose answers are known in closed form.
-#include "skin/skin_walk.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "skin/sampling/cosine_sampling.h"
-#include "skin/fresnel.h"
-#include "skin/melanosome_interaction.h"
-#include "skin/sampling/melanosome_orientation_sampling.h"
-#include "skin/skin_simulation.h"
-#include "skin/spheroid_intersection.h"
 #include "skin/core/constants.h"
 #include "skin/core/thread_limit.h"
+#include "skin/fresnel.h"
+#include "skin/melanosome_interaction.h"
+#include "skin/sampling/cosine_sampling.h"
+#include "skin/sampling/melanosome_orientation_sampling.h"
+#include "skin/skin_simulation.h"
+#include "skin/skin_walk.h"
+#include "skin/spheroid_intersection.h"
 #include "tests/support/clear_optics.h"
 
 using hylios::kPi;
@@ -62,7 +61,8 @@ TEST(SkinWalk, AbsorbingSlabOverMatchedMediumFollowsBeerLambert) {
   const std::uint64_t rays = 40000;
   const SkinTally t = run(optics, walk, 0, rays);
   const double expected = std::exp(-1.0);
-  const double sigma = std::sqrt(expected * (1 - expected) / static_cast<double>(rays));  // ≈ 0.0024
+  const double sigma =
+      std::sqrt(expected * (1 - expected) / static_cast<double>(rays));  // ≈ 0.0024
   EXPECT_NEAR(t.transmittance().mean, expected, 4 * sigma);
   EXPECT_EQ(t.reflectance().mean, 0.0);
   EXPECT_DOUBLE_EQ(t.transmittance().mean + t.absorptance().mean, 1.0);
@@ -91,8 +91,9 @@ TEST(SkinWalk, EnergyIsAccountedForWithEveryProcess) {
   optics.meanScatteringAngleRad = 5.0 * kPi / 180.0;
   optics.layers[index(Layer::PapillaryDermis)].muRayleigh_perCm = 2500;
   const SkinTally t = run(optics, WalkOptions{}, 45, 20000);
-  EXPECT_DOUBLE_EQ(t.reflectance().mean + t.transmittance().mean + t.absorptance().mean +
-                       t.eventLimited().mean, 1.0);
+  EXPECT_DOUBLE_EQ(
+      t.reflectance().mean + t.transmittance().mean + t.absorptance().mean + t.eventLimited().mean,
+      1.0);
   EXPECT_EQ(t.eventLimited().mean, 0.0);
   EXPECT_GT(t.melanosomeAbsorptance().mean, 0.0);
   double layers = 0;
@@ -142,15 +143,16 @@ TEST(MelanosomeInteraction, MatchedSphereAbsorbsAsItsChordLengthsSay) {
 TEST(MelanosomeInteraction, ClearMelanosomeNeverAbsorbsAndAlwaysLetsTheRayOut) {
   Rng rng(5);
   for (int i = 0; i < 20000; ++i)
-    ASSERT_FALSE(absorbedInMelanosome(normalize(Vec3{0.3, 0.2, 1}), 0.2e-4, 4e-4, 0.0, 1.4, 1.7, rng));
+    ASSERT_FALSE(
+        absorbedInMelanosome(normalize(Vec3{0.3, 0.2, 1}), 0.2e-4, 4e-4, 0.0, 1.4, 1.7, rng));
 }
 
 namespace {
 /// The melanosome interaction traced in the world frame, step by step as Sec. 4.2.2 describes it,
 /// with the geometry samplers of skin/sampling/melanosome_orientation_sampling.h and
 /// skin/spheroid_intersection.h: the reference for the body-frame shortcut of MelanosomeLayer.
-bool absorbedInWorldFrame(const Vec3& direction, double a, double c, double muA, double n1, double n2,
-                          Rng& rng) {
+bool absorbedInWorldFrame(const Vec3& direction, double a, double c, double muA, double n1,
+                          double n2, Rng& rng) {
   const ProlateSpheroid spheroid{a, c};
   const double u1 = rng.uniform(), u2 = rng.uniform();
   const Vec3 axis = sampleMelanosomeAxis(spheroid, direction, u1, u2);  // Eq. 8
@@ -190,7 +192,8 @@ TEST(MelanosomeInteraction, BodyFrameShortcutMatchesTheWorldFrameWalk) {
     const double pFast = fast / double(trials), pReference = reference / double(trials);
     // Two independent binomial estimates: σ of the difference = sqrt(2 p (1 − p)/N) ≤ 0.0023.
     const double sigma = std::sqrt(2.0 * pReference * (1.0 - pReference) / trials);
-    EXPECT_NEAR(pFast, pReference, 4.0 * sigma) << "muA = " << muA << ": " << pFast << " vs " << pReference;
+    EXPECT_NEAR(pFast, pReference, 4.0 * sigma)
+        << "muA = " << muA << ": " << pFast << " vs " << pReference;
     EXPECT_GT(pReference, 0.05) << "muA = " << muA;  // the case tests something
   }
 }

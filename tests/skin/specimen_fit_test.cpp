@@ -2,14 +2,13 @@
 // from known values (with an independent seed, so it carries Monte Carlo noise like a measurement)
 // is recovered within the stated uncertainties; fitted values stay inside their bounds; bad
 // requests are clear errors.
-#include "skin/specimen_fit.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
 #include <limits>
 
+#include "skin/specimen_fit.h"
 #include "tests/support/test_spectra.h"
 
 namespace hylios::skin {
@@ -21,8 +20,8 @@ std::vector<double> grid(double from, double to, double step) {
   return w;
 }
 
-FitTarget synthesise(const Specimen& truth, const std::vector<double>& wavelengths, std::uint64_t rays,
-                     std::uint64_t seed) {
+FitTarget synthesise(const Specimen& truth, const std::vector<double>& wavelengths,
+                     std::uint64_t rays, std::uint64_t seed) {
   FitOptions options;
   options.rays = rays;
   options.seed = seed;
@@ -45,8 +44,8 @@ TEST(SpecimenFit, RecoversKnownValuesWithinStatedUncertainties) {
   options.rays = 10000;
   options.seed = 3;
   const FitResult fit = fitSpecimen(s2, test::spectra(), target, options);
-  std::cout << "RMS " << fit.startRms << " -> " << fit.rms << ", " << fit.evaluations << " evaluations, "
-            << fit.stopReason << "\n";
+  std::cout << "RMS " << fit.startRms << " -> " << fit.rms << ", " << fit.evaluations
+            << " evaluations, " << fit.stopReason << "\n";
   const double truthValues[] = {2.0, 1.2, 70.0};
   for (std::size_t k = 0; k < fit.quantities.size(); ++k) {
     const FittedQuantity& q = fit.quantities[k];
@@ -112,15 +111,17 @@ TEST(SpecimenFit, BadRequestsAreClearErrors) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message(target, {"melanin"}).find("unknown fit quantity 'melanin' (known: melanosome"), std::string::npos);
+  EXPECT_NE(message(target, {"melanin"}).find("unknown fit quantity 'melanin' (known: melanosome"),
+            std::string::npos);
   EXPECT_NE(message(target, {}).find("no quantity to fit"), std::string::npos);
   EXPECT_NE(message(target, {"blood", "blood"}).find("given twice"), std::string::npos);
   EXPECT_NE(message(FitTarget{}, {"blood"}).find("no wavelength in common"), std::string::npos);
   FitTarget nan = target;
   nan.reflectance[1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message(nan, {"blood"}).find("value at 500 nm is not finite"), std::string::npos);
-  EXPECT_NE(message(FitTarget{{500}, {0.3}}, {"blood", "colloidal"}).find("at least as many wavelengths"),
-            std::string::npos);
+  EXPECT_NE(
+      message(FitTarget{{500}, {0.3}}, {"blood", "colloidal"}).find("at least as many wavelengths"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 // Specimen files (Tables 1–2) and overrides: values as in the paper, and every error with its
 // file:line:col position.
-#include "skin/specimen.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "skin/specimen.h"
 
 namespace hylios::skin {
 namespace {
@@ -139,8 +139,8 @@ TEST(Specimen, UnknownNameSaysWhichFileIsMissing) {
 TEST(SpecimenErrors, UnknownKeyWithPosition) {
   const std::string text = editedS1("keratin_percent = 65.0", "keratin_percent = 65.0\nhair = 1");
   const int line = lineOf(text, "hair = 1");
-  EXPECT_EQ(parseError(text).rfind("bad.toml:" + std::to_string(line) + ":1: unknown key 'hair'", 0),
-            0u)
+  EXPECT_EQ(
+      parseError(text).rfind("bad.toml:" + std::to_string(line) + ":1: unknown key 'hair'", 0), 0u)
       << parseError(text);
 }
 
@@ -159,15 +159,15 @@ TEST(SpecimenErrors, WrongUnitSuffixNamesTheExpectedKey) {
 TEST(SpecimenErrors, NegativeThickness) {
   const std::string text = editedS1("thickness_cm = 0.02 ", "thickness_cm = -0.02");
   const int line = lineOf(text, "thickness_cm = -0.02");
-  EXPECT_EQ(parseError(text), "bad.toml:" + std::to_string(line) +
-                                  ":16: 'thickness_cm' = -0.02 must be >= 0");
+  EXPECT_EQ(parseError(text),
+            "bad.toml:" + std::to_string(line) + ":16: 'thickness_cm' = -0.02 must be >= 0");
 }
 
 TEST(SpecimenErrors, PercentAboveHundred) {
   const std::string text = editedS1("water_percent = 60.0", "water_percent = 160.0");
   const int line = lineOf(text, "water_percent = 160.0");
-  EXPECT_EQ(parseError(text), "bad.toml:" + std::to_string(line) +
-                                  ":17: 'water_percent' = 160 must be in [0, 100]");
+  EXPECT_EQ(parseError(text),
+            "bad.toml:" + std::to_string(line) + ":17: 'water_percent' = 160 must be in [0, 100]");
 }
 
 TEST(SpecimenErrors, WrongType) {
@@ -269,8 +269,9 @@ TEST(SpecimenOverrides, RangeErrorsNameTheOrigin) {
             "--set: surface_fold_aspect_ratio = 0 must be > 0");
   EXPECT_EQ(message({"stratum_corneum.thickness_cm", -1e-3, "--set"}),
             "--set: stratum_corneum.thickness_cm = -0.001 must be >= 0");
-  EXPECT_EQ(message({"melanin", 1.0, "--set"}).rfind("--set: unknown specimen override 'melanin'", 0),
-            0u);
+  EXPECT_EQ(
+      message({"melanin", 1.0, "--set"}).rfind("--set: unknown specimen override 'melanin'", 0),
+      0u);
   // A rejected override leaves the specimen unchanged.
   EXPECT_DOUBLE_EQ(s.melanosomeFraction[index(Layer::StratumBasale)], 0.0375);
   EXPECT_DOUBLE_EQ(s.waterReduction, 0.0);
@@ -278,8 +279,8 @@ TEST(SpecimenOverrides, RangeErrorsNameTheOrigin) {
 
 TEST(SpecimenOverrides, KeysAreListed) {
   const auto keys = overrideKeys();
-  for (const char* k : {"melanosome_percent", "colloidal_melanin_percent", "water_reduction_percent",
-                        "blood_percent", "oxygenation_percent"})
+  for (const char* k : {"melanosome_percent", "colloidal_melanin_percent",
+                        "water_reduction_percent", "blood_percent", "oxygenation_percent"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), k), keys.end()) << k;
 }
 

@@ -1,11 +1,10 @@
 // The specimen writer: every specimen of Tables 1–2 written and read back is the same specimen,
 // and a changed quantity survives the round trip.
-#include "skin/specimen_writer.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "skin/specimen_writer.h"
 #include "tests/support/test_spectra.h"
 
 namespace hylios::skin {
@@ -16,7 +15,8 @@ void expectNear(double a, double b, const std::string& what) {
 }
 void expectNear(const std::array<double, kLayerCount>& a, const std::array<double, kLayerCount>& b,
                 const std::string& what) {
-  for (Layer l : kAllLayers) expectNear(a[index(l)], b[index(l)], what + " " + std::string(layerName(l)));
+  for (Layer l : kAllLayers)
+    expectNear(a[index(l)], b[index(l)], what + " " + std::string(layerName(l)));
 }
 
 void expectSameSpecimen(const Specimen& a, const Specimen& b) {
@@ -44,8 +44,10 @@ void expectSameSpecimen(const Specimen& a, const Specimen& b) {
   expectNear(f.bloodSulfhemoglobin_mgPerMl, g.bloodSulfhemoglobin_mgPerMl, "SHb");
   expectNear(f.bloodBilirubin_mgPerMl, g.bloodBilirubin_mgPerMl, "bilirubin");
   expectNear(f.bloodBetaCarotene_mgPerMl, g.bloodBetaCarotene_mgPerMl, "blood carotene");
-  expectNear(f.stratumCorneumBetaCarotene_mgPerMl, g.stratumCorneumBetaCarotene_mgPerMl, "SC carotene");
-  expectNear(f.epidermisBetaCarotene_mgPerMl, g.epidermisBetaCarotene_mgPerMl, "epidermis carotene");
+  expectNear(f.stratumCorneumBetaCarotene_mgPerMl, g.stratumCorneumBetaCarotene_mgPerMl,
+             "SC carotene");
+  expectNear(f.epidermisBetaCarotene_mgPerMl, g.epidermisBetaCarotene_mgPerMl,
+             "epidermis carotene");
   expectNear(f.stratumCorneumKeratinFraction, g.stratumCorneumKeratinFraction, "keratin");
   expectNear(f.stratumCorneumUrocanicAcid_molPerL, g.stratumCorneumUrocanicAcid_molPerL, "UCA");
   expectNear(f.dna_mgPerMl, g.dna_mgPerMl, "DNA");

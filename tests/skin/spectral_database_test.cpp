@@ -1,7 +1,5 @@
 // Tests of the spectral database: hand-computed values from table rows, the declared extensions
 // (continuity, band constraints, zero beyond bands), coverage errors, and load errors.
-#include "skin/spectral_database.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "skin/spectral_database.h"
 
 namespace hylios::skin {
 namespace {
@@ -27,9 +27,7 @@ const SpectralDatabase& database() {
   return db;
 }
 
-double mu(Absorber a, double nm) {
-  return database().specificAbsorption(a, nm);
-}
+double mu(Absorber a, double nm) { return database().specificAbsorption(a, nm); }
 
 std::string errorAt(Absorber a, double nm) {
   try {

@@ -1,7 +1,5 @@
 // Tests of SpectralExtensions::parse (the text form of SpectralExtensions::load, used by the
 // fuzz harness): same values as loading the file, errors named after the given source.
-#include "skin/spectral_extensions.h"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -9,6 +7,7 @@
 #include <string>
 
 #include "skin/spectral_database.h"
+#include "skin/spectral_extensions.h"
 
 namespace hylios::skin {
 namespace {

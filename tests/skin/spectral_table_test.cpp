@@ -1,12 +1,12 @@
 // Tests of the CSV spectral table reader: parsing, interpolation, and errors naming file:line.
-#include "skin/spectral_table.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "skin/spectral_table.h"
 
 namespace hylios::skin {
 namespace {

@@ -1,8 +1,6 @@
 // The spectral walk (one path, many wavelengths) against the per-wavelength analog walk it
 // replaces: same expectation for every wavelength, specimen and incidence, within 4 combined
 // standard errors (each side's error from its own per-path scores).
-#include "skin/spectral_walk.h"
-
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -12,9 +10,10 @@
 #include <vector>
 
 #include "skin/skin_simulation.h"
+#include "skin/specimen.h"
 #include "skin/spectral_bundle.h"
 #include "skin/spectral_simulation.h"
-#include "skin/specimen.h"
+#include "skin/spectral_walk.h"
 #include "tests/support/test_spectra.h"
 
 using namespace hylios::skin;
@@ -23,11 +22,12 @@ namespace {
 
 // 21 wavelengths over 250–2500 nm: UV, the hemoglobin bands, the θo ramp (780–1400 nm) and
 // its end, the water bands at 1450 and 1940 nm.
-const std::vector<double> kWavelengthsNm = {250, 300,  365,  420,  500,  550,  577,
-                                            650, 700,  780,  900,  1000, 1100, 1200,
+const std::vector<double> kWavelengthsNm = {250,  300,  365,  420,  500,  550,  577,
+                                            650,  700,  780,  900,  1000, 1100, 1200,
                                             1300, 1400, 1450, 1650, 1940, 2200, 2500};
 
-std::vector<SkinOptics> opticsAt(const std::string& specimen, const std::vector<double>& wavelengths) {
+std::vector<SkinOptics> opticsAt(const std::string& specimen,
+                                 const std::vector<double>& wavelengths) {
   const Specimen s = loadSpecimen(specimen, hylios::test::specimenDir());
   std::vector<SkinOptics> optics;
   for (double w : wavelengths) optics.push_back(computeSkinOptics(s, hylios::test::spectra(), w));
@@ -55,7 +55,8 @@ std::string compare(const SkinTally& spectral, const SkinTally& analog, const st
     const double score = zAgainstAnalog(a, b, analog.rays());
     if (!(std::fabs(score) <= 4.0))
       failures << where << " " << what << ": spectral " << a.mean << " ± " << a.standardError
-               << ", per-wavelength " << b.mean << " ± " << b.standardError << " (z = " << score << ")\n";
+               << ", per-wavelength " << b.mean << " ± " << b.standardError << " (z = " << score
+               << ")\n";
   };
   check("R", spectral.reflectance(), analog.reflectance());
   check("R surface", spectral.surfaceReflectance(), analog.surfaceReflectance());
@@ -68,7 +69,8 @@ std::string compare(const SkinTally& spectral, const SkinTally& analog, const st
 }
 
 /// Spectral and per-wavelength walks of `specimen` at 0°, 45° and 80° over kWavelengthsNm.
-void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays, const WalkOptions& walk = {}) {
+void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays,
+                               const WalkOptions& walk = {}) {
   const std::vector<SkinOptics> optics = opticsAt(specimen, kWavelengthsNm);
   std::string failures;
   for (double angle : {0.0, 45.0, 80.0}) {
@@ -122,8 +124,11 @@ TEST(SpectralWalk, TabulatedMelanosomesMatchTheExactWalk) {
       analog.incidenceDeg = 45;
       analog.rays = 20000;
       const SkinTally a = simulateSkin(optics[i], analog);
-      EXPECT_LE(std::fabs(z(s[i].reflectance(), a.reflectance())), 4.0) << specimen << " " << wavelengths[i];
-      EXPECT_LE(std::fabs(z(s[i].absorptance(Layer::StratumBasale), a.absorptance(Layer::StratumBasale))), 4.0)
+      EXPECT_LE(std::fabs(z(s[i].reflectance(), a.reflectance())), 4.0)
+          << specimen << " " << wavelengths[i];
+      EXPECT_LE(
+          std::fabs(z(s[i].absorptance(Layer::StratumBasale), a.absorptance(Layer::StratumBasale))),
+          4.0)
           << specimen << " " << wavelengths[i];
     }
   }
@@ -188,9 +193,9 @@ TEST(SpectralWalk, ReflectionDirectionsAndRadialProfileMatch) {
     }
     return sum;
   };
-  EXPECT_LT(chi2(*s[1].surfaceDirections(), *a.surfaceDirections()), 67.0);      // χ²(36) 0.1 %
+  EXPECT_LT(chi2(*s[1].surfaceDirections(), *a.surfaceDirections()), 67.0);  // χ²(36) 0.1 %
   EXPECT_LT(chi2(*s[1].subsurfaceDirections(), *a.subsurfaceDirections()), 67.0);
-  EXPECT_LT(chi2(*s[1].radialExits(), *a.radialExits()), 32.9);                  // χ²(12) 0.1 %
+  EXPECT_LT(chi2(*s[1].radialExits(), *a.radialExits()), 32.9);  // χ²(12) 0.1 %
 }
 
 TEST(SpectralWalk, SameSeedSameResultAtOneAndTwoThreads) {
@@ -210,14 +215,15 @@ TEST(SpectralWalk, SameSeedSameResultAtOneAndTwoThreads) {
   for (std::size_t i = 0; i < optics.size(); ++i) {
     EXPECT_EQ(one[i].reflectance().mean, two[i].reflectance().mean);
     EXPECT_EQ(one[i].reflectance().standardError, two[i].reflectance().standardError);
-    EXPECT_EQ(one[i].absorptance(Layer::PapillaryDermis).mean, two[i].absorptance(Layer::PapillaryDermis).mean);
+    EXPECT_EQ(one[i].absorptance(Layer::PapillaryDermis).mean,
+              two[i].absorptance(Layer::PapillaryDermis).mean);
   }
 }
 
 TEST(SpectralWalk, OneWavelengthAloneOrInABundleHasTheSameExpectation) {
   // A bundle of one carries no ratios; the same λ inside a bundle of 16 must agree within noise.
-  const std::vector<SkinOptics> bundle = opticsAt("S1", {500, 505, 510, 515, 520, 525, 530, 535, 540,
-                                                         545, 550, 555, 560, 565, 570, 575});
+  const std::vector<SkinOptics> bundle = opticsAt(
+      "S1", {500, 505, 510, 515, 520, 525, 530, 535, 540, 545, 550, 555, 560, 565, 570, 575});
   SpectralWalk together(bundle);
   SpectralWalk alone(std::vector<SkinOptics>{bundle[5]});
   RunningStatistic inBundle, single;

@@ -1,23 +1,21 @@
 // Ray / spheroid geometry (Sec. 4.2.2 hit points): entry points uniform over the silhouette
 // (chi-square in the ellipse's normalised radius² and angle), entry points on the surface facing
 // the ray, normals, exit distances by hand for a sphere and for c/a = 20, the mean chord V/A.
-#include "skin/spheroid_intersection.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "skin/core/random.h"
-#include "tests/support/chi2.h"
 #include "skin/core/constants.h"
+#include "skin/core/random.h"
+#include "skin/spheroid_intersection.h"
+#include "tests/support/chi2.h"
 
 using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
-
 
 /// x²/a² + y²/a² + z²/c² in the body frame, computed from the axis without the library's frame.
 double normalisedRadiusSquared(const ProlateSpheroid& s, const Vec3& axis, const Vec3& p) {
@@ -80,11 +78,11 @@ TEST_P(SilhouetteChi2, EntryPointsAreUniformOverTheSilhouetteAndOnTheSurface) {
 
 INSTANTIATE_TEST_SUITE_P(
     ShapesAndViews, SilhouetteChi2,
-    ::testing::Values(SilhouetteCase{{1.0, 1.0}, {0, 0, 1}, {0.2, 0.3, 0.9}},         // sphere
-                      SilhouetteCase{{0.085, 0.205}, {0, 0, 1}, {0, 0, 1}},          // along axis
-                      SilhouetteCase{{0.085, 0.205}, {1, 1, 0}, {0, 0, -1}},         // α = 90°
+    ::testing::Values(SilhouetteCase{{1.0, 1.0}, {0, 0, 1}, {0.2, 0.3, 0.9}},  // sphere
+                      SilhouetteCase{{0.085, 0.205}, {0, 0, 1}, {0, 0, 1}},    // along axis
+                      SilhouetteCase{{0.085, 0.205}, {1, 1, 0}, {0, 0, -1}},   // α = 90°
                       SilhouetteCase{{0.085, 0.205}, {0.3, -0.5, 0.8}, {0.6, 0, 0.8}},
-                      SilhouetteCase{{0.05, 1.0}, {0, 1, 0}, {0.6, 0.8, 0}},         // c/a = 20
+                      SilhouetteCase{{0.05, 1.0}, {0, 1, 0}, {0.6, 0.8, 0}},  // c/a = 20
                       SilhouetteCase{{0.05, 1.0}, {0, 0, 1}, {0, 0, -1}}));
 
 TEST(SpheroidIntersection, ExitDistanceForASphereByHand) {
@@ -129,7 +127,8 @@ TEST(SpheroidIntersection, MeanChordIsVolumeOverSilhouetteArea) {
   const int n = 200000;
   double sum = 0, sumSquares = 0;
   for (int i = 0; i < n; ++i) {
-    const SpheroidSurfacePoint hit = sampleSilhouetteEntry(needle, axis, d, rng.uniform(), rng.uniform());
+    const SpheroidSurfacePoint hit =
+        sampleSilhouetteEntry(needle, axis, d, rng.uniform(), rng.uniform());
     const SpheroidExit e = distanceToSpheroidExit(needle, axis, hit.position, d);
     ASSERT_NEAR(normalisedRadiusSquared(needle, axis, e.position), 1.0, 1e-9);
     ASSERT_GT(dot(e.outwardNormal, d), 0.0) << "the exit point must face away from the ray";

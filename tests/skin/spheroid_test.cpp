@@ -1,17 +1,16 @@
 // Prolate spheroid geometry (Eq. 7): hand values, the sphere limit, and degenerate inputs.
-#include "skin/spheroid.h"
-#include "skin/core/constants.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
+#include "skin/core/constants.h"
+#include "skin/spheroid.h"
+
 using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
-
 
 TEST(Spheroid, SurfaceToVolumeHandValueForLightMelanosome) {
   // a = 0.085 µm, c = 0.205 µm (half of Table 1's 0.17 × 0.41 µm).

@@ -1,11 +1,10 @@
 // RunningStatistic and Histogram: hand-computed means and standard errors, merging, errors.
-#include "skin/core/statistics.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "skin/core/random.h"
+#include "skin/core/statistics.h"
 
 namespace hylios::skin {
 namespace {

@@ -1,8 +1,6 @@
 // Surface-normal polar angle (Sec. 4.3): chi-square for s = 0.1, 0.25, 0.45, 1, 2 (and 1e-6 on
 // its own scale); the closed-form normalisation and CDF against quadrature of the paper's formula;
 // hand values; the nearly specular limit s -> 0; end points and monotonicity.
-#include "skin/sampling/surface_normal_sampling.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 #include <vector>
 
 #include "skin/core/random.h"
+#include "skin/sampling/surface_normal_sampling.h"
 #include "tests/support/chi2.h"
 
 namespace hylios::skin {
@@ -69,12 +68,13 @@ TEST(SurfaceNormalSampling, HandValues) {
   EXPECT_NEAR(sampleSurfaceNormalPolar(1e-6, 0.8) / 2e-6, 1.0, 1e-9);
   EXPECT_NEAR(sampleSurfaceNormalPolar(1e-30, 0.8) / 2e-30, 1.0, 1e-15);
   // The closed-form branch and the s -> 0 limit branch meet at s = 1e-20.
-  EXPECT_NEAR(sampleSurfaceNormalPolar(1.000001e-20, 0.3) / sampleSurfaceNormalPolar(0.999999e-20, 0.3),
-              1.000001 / 0.999999, 1e-12);
+  EXPECT_NEAR(
+      sampleSurfaceNormalPolar(1.000001e-20, 0.3) / sampleSurfaceNormalPolar(0.999999e-20, 0.3),
+      1.000001 / 0.999999, 1e-12);
   // The u <= 1/2 (head) and u > 1/2 (tail) branches meet at u = 1/2.
   for (const double s : {0.1, 2.0}) {
-    EXPECT_NEAR(sampleSurfaceNormalPolar(s, 0.5), sampleSurfaceNormalPolar(s, std::nextafter(0.5, 1.0)),
-                1e-14);
+    EXPECT_NEAR(sampleSurfaceNormalPolar(s, 0.5),
+                sampleSurfaceNormalPolar(s, std::nextafter(0.5, 1.0)), 1e-14);
   }
 }
 

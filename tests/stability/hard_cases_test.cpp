@@ -1,27 +1,27 @@
-// Hard cases of the HyLIoS walk (docs/architecture.md, "Rules that hold everywhere"): each runs real specimens at the edges of
-// the model and asserts finite outputs, exact energy balance (every ray ends in exactly one of
-// reflected / transmitted / absorbed, so R + T + A = 1 per ray) and termination (no ray reaches
-// the event bound; the mean number of events stays bounded).
+// Hard cases of the HyLIoS walk (docs/architecture.md, "Rules that hold everywhere"): each runs
+// real specimens at the edges of the model and asserts finite outputs, exact energy balance (every
+// ray ends in exactly one of reflected / transmitted / absorbed, so R + T + A = 1 per ray) and
+// termination (no ray reaches the event bound; the mean number of events stays bounded).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
+#include "skin/core/constants.h"
+#include "skin/core/random.h"
+#include "skin/rough_surface.h"
 #include "skin/sampling/cosine_sampling.h"
 #include "skin/sampling/exponential_polar_sampling.h"
 #include "skin/sampling/henyey_greenstein.h"
 #include "skin/sampling/melanosome_orientation_sampling.h"
-#include "skin/core/random.h"
 #include "skin/sampling/rayleigh_sampling.h"
-#include "skin/rough_surface.h"
+#include "skin/sampling/surface_normal_sampling.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
 #include "skin/spheroid_intersection.h"
-#include "skin/sampling/surface_normal_sampling.h"
 #include "tests/support/test_spectra.h"
-#include "skin/core/constants.h"
 
 using hylios::kPi;
 
@@ -33,10 +33,13 @@ const std::string kRoot = HYLIOS_SOURCE_DIR;
 
 using hylios::test::spectra;
 
-Specimen specimen(const std::string& name) { return loadSpecimen(name, kRoot + "/scenes/specimens"); }
+Specimen specimen(const std::string& name) {
+  return loadSpecimen(name, kRoot + "/scenes/specimens");
+}
 
 /// Runs `rays` rays and checks the three invariants; returns the tally for further checks.
-SkinTally expectStable(const Specimen& s, double wavelengthNm, double angleDeg, std::uint64_t rays = 3000) {
+SkinTally expectStable(const Specimen& s, double wavelengthNm, double angleDeg,
+                       std::uint64_t rays = 3000) {
   WalkRunOptions options;
   options.incidenceDeg = angleDeg;
   options.rays = rays;
@@ -44,7 +47,8 @@ SkinTally expectStable(const Specimen& s, double wavelengthNm, double angleDeg, 
   const SkinTally t = simulateSkin(computeSkinOptics(s, spectra(), wavelengthNm), options);
   const double balance = t.reflectance().mean + t.transmittance().mean + t.absorptance().mean;
   EXPECT_TRUE(std::isfinite(balance) && std::isfinite(t.reflectance().standardError));
-  EXPECT_NEAR(balance, 1.0, 1e-12) << s.name << " at " << wavelengthNm << " nm, " << angleDeg << "°";
+  EXPECT_NEAR(balance, 1.0, 1e-12)
+      << s.name << " at " << wavelengthNm << " nm, " << angleDeg << "°";
   EXPECT_EQ(t.eventLimited().mean, 0.0) << "rays stopped by the event bound";
   EXPECT_LT(t.meanEvents(), 1e4) << "mean events per ray";
   return t;
@@ -91,7 +95,8 @@ TEST(HardCases, ZeroThicknessLayers) {
 
 TEST(HardCases, EmptyEpidermis) {
   Specimen s = specimen("S2");
-  for (Layer l : {Layer::StratumCorneum, Layer::StratumGranulosum, Layer::StratumSpinosum, Layer::StratumBasale})
+  for (Layer l : {Layer::StratumCorneum, Layer::StratumGranulosum, Layer::StratumSpinosum,
+                  Layer::StratumBasale})
     s.thicknessCm[index(l)] = 0;
   expectStable(s, 365, 30);
 }
@@ -179,7 +184,8 @@ TEST(HardCases, SamplersAcceptTheExtremeUniformNumbers) {
   const ProlateSpheroid needle{0.01, 0.2}, sphere{0.1, 0.1};
   for (double u : {0.0, kOneMinusEpsilon}) {
     EXPECT_TRUE(std::isfinite(sampleRayleighPolar(u)));
-    for (double theta0 : {0.0, 1e-12, 0.0873, 3.0}) EXPECT_TRUE(std::isfinite(sampleExponentialPolar(theta0, u)));
+    for (double theta0 : {0.0, 1e-12, 0.0873, 3.0})
+      EXPECT_TRUE(std::isfinite(sampleExponentialPolar(theta0, u)));
     for (double s : {1e-6, 0.1, 2.0}) EXPECT_TRUE(std::isfinite(sampleSurfaceNormalPolar(s, u)));
     EXPECT_TRUE(std::isfinite(sampleCosinePolar(u)));
     for (double g : {0.0, 0.9, -0.9}) EXPECT_TRUE(std::isfinite(sampleHenyeyGreensteinCos(g, u)));

@@ -2,8 +2,8 @@
 // at the edges of their physiological ranges (each parameter takes an edge value with
 // probability 1/4). Each combination runs 200 rays and must give finite results, exact energy
 // balance and no ray stopped by the event bound; and the spectral walk on a bundle of wavelengths
-// around it must give finite weights within their bounds. The combinations are drawn from a fixed seed,
-// so a failure names a reproducible case.
+// around it must give finite weights within their bounds. The combinations are drawn from a fixed
+// seed, so a failure names a reproducible case.
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
 
@@ -35,9 +35,12 @@ struct Range {
 
 // Physiological ranges (paper Sec. 3 and Table 1, widened to the edges the model must survive).
 constexpr Range kRanges[] = {
-    {"melanosome_percent", 0, 10},        {"colloidal_melanin_percent", 0, 30},
-    {"blood_percent", 0, 10},             {"oxygenation_percent", 0, 100},
-    {"water_reduction_percent", 0, 100},  {"surface_fold_aspect_ratio", 0.05, 2},
+    {"melanosome_percent", 0, 10},
+    {"colloidal_melanin_percent", 0, 30},
+    {"blood_percent", 0, 10},
+    {"oxygenation_percent", 0, 100},
+    {"water_reduction_percent", 0, 100},
+    {"surface_fold_aspect_ratio", 0.05, 2},
 };
 
 double draw(Rng& rng, double low, double high) {
@@ -52,7 +55,8 @@ double draw(Rng& rng, double low, double high) {
 TEST(ParameterSweep, TenThousandCombinationsStayFiniteBalancedAndBounded) {
   const SpectralDatabase spectra = SpectralDatabase::load(kRoot + "/assets/spectra");
   std::vector<Specimen> bases;
-  for (const char* name : {"S1", "S2", "S3", "S4"}) bases.push_back(loadSpecimen(name, kRoot + "/scenes/specimens"));
+  for (const char* name : {"S1", "S2", "S3", "S4"})
+    bases.push_back(loadSpecimen(name, kRoot + "/scenes/specimens"));
   constexpr int kCombinations = 10000;
   std::atomic<int> failures{0};
   std::mutex reportMutex;
@@ -78,7 +82,8 @@ TEST(ParameterSweep, TenThousandCombinationsStayFiniteBalancedAndBounded) {
     // weight is roulette × transmittance × MIS ratio ≤ 1 × 1 × N; a split surface weight ≤ 1).
     std::vector<SkinOptics> near;
     for (double dw : {0.0, 3.0, 7.0})
-      if (wavelengthNm + dw <= 2500) near.push_back(computeSkinOptics(s, spectra, wavelengthNm + dw));
+      if (wavelengthNm + dw <= 2500)
+        near.push_back(computeSkinOptics(s, spectra, wavelengthNm + dw));
     bool weightsOk = true;
     double worstWeight = 0;
     SpectralPath path;
@@ -97,8 +102,8 @@ TEST(ParameterSweep, TenThousandCombinationsStayFiniteBalancedAndBounded) {
           const double surface = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[k];
           worstWeight = std::max(worstWeight, w);
           weightsOk = weightsOk && std::isfinite(w) && std::isfinite(a) && w >= 0 &&
-                      w <= static_cast<double>(bundle.size()) * (1 + 1e-12) && surface >= 0 && surface <= 1 &&
-                      path.end != PathEnd::EventLimit;
+                      w <= static_cast<double>(bundle.size()) * (1 + 1e-12) && surface >= 0 &&
+                      surface <= 1 && path.end != PathEnd::EventLimit;
         }
       }
     }
@@ -109,7 +114,8 @@ TEST(ParameterSweep, TenThousandCombinationsStayFiniteBalancedAndBounded) {
     if (!ok && failures.fetch_add(1) < 10) {
       std::lock_guard<std::mutex> lock(reportMutex);
       report << description.str() << ": R+T+A=" << balance << " limited=" << t.eventLimited().mean
-             << " spectral weights " << (weightsOk ? "ok" : "out of bounds") << " (largest " << worstWeight << ")\n";
+             << " spectral weights " << (weightsOk ? "ok" : "out of bounds") << " (largest "
+             << worstWeight << ")\n";
     }
   });
   EXPECT_EQ(failures.load(), 0) << report.str();

@@ -2,15 +2,15 @@
 // runner that parses one command line with a command registered on a fresh CLI11 app, and a check
 // that a command fails with a message naming the problem.
 #pragma once
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace hylios::test {
@@ -18,7 +18,8 @@ namespace hylios::test {
 struct ScratchFolder {
   std::filesystem::path path;
   explicit ScratchFolder(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("hylios-" + name + "-" + std::to_string(::getpid()))) {
+      : path(std::filesystem::temp_directory_path() /
+             ("hylios-" + name + "-" + std::to_string(::getpid()))) {
     std::filesystem::create_directories(path);
   }
   ~ScratchFolder() {
@@ -44,7 +45,8 @@ inline std::vector<std::vector<std::string>> readCsv(const std::filesystem::path
 
 /// Parses "name arguments…" with the command registered by `registerCommand`; the command's
 /// callback runs (and throws) inside.
-inline void runCommandLine(const std::function<void(CLI::App&)>& registerCommand, const std::string& commandLine) {
+inline void runCommandLine(const std::function<void(CLI::App&)>& registerCommand,
+                           const std::string& commandLine) {
   CLI::App app;
   registerCommand(app);
   app.parse(commandLine, false);
