@@ -1,14 +1,12 @@
 // `hylios validate`: every comparison the project has data for, computed and written as a
 // Markdown report with plots (issue 14). The comparisons:
 //
-// | id     | what                                                                 | data |
+// | id     | what                                                                 | data                           |
 // |--------|----------------------------------------------------------------------|--------------------------------|
-// | fig7   | S1 vs NCSU object 117 and S2 vs object 113, 45°, 400–700 nm (Fig. 7) |
-// tests/data/validation (Vrhel 1994) | | fig8   | S2 epidermis, 302 nm, normal incidence,
-// transmitted profile (Fig. 8) | none in the project: the paper's claim (forward scattering) is
-// checked | | fig10  | S1 visible BRDF in the plane of incidence at 0° and 60° (Fig. 10)    | none
-// in the project: shape checks | | fig11  | S1 at 45°, 365 nm vs 1100 nm, surface/subsurface/total
-// (Fig. 11)     | none in the project: the paper's claim (IR more diffuse) is checked |
+// | fig7   | S1 vs NCSU object 117 and S2 vs object 113, 45°, 400–700 nm (Fig. 7) | tests/data/validation (Vrhel 1994) |
+// | fig8   | S2 epidermis, 302 nm, normal incidence, transmitted profile (Fig. 8) | none in the project: the paper's claim (forward scattering) is checked |
+// | fig10  | S1 visible BRDF in the plane of incidence at 0° and 60° (Fig. 10)    | none in the project: shape checks |
+// | fig11  | S1 at 45°, 365 nm vs 1100 nm, surface/subsurface/total (Fig. 11)     | none in the project: the paper's claim (IR more diffuse) is checked |
 #pragma once
 #include <cstdint>
 #include <filesystem>

@@ -10,19 +10,18 @@
 // The free quantities and their physiological bounds (with citations in docs/interpretations.md,
 // "Fitting a specimen"):
 //
-// | name                        | what it sets                                               | unit
-// |
+// | name                        | what it sets                                               | unit |
 // |-----------------------------|------------------------------------------------------------|------|
-// | melanosome                  | melanosome content of the most pigmented epidermal layer;   | % |
-// |                             | the other layers keep their ratio to it                     | |
-// | colloidal                   | colloidal melanin content (same profile rule)              | % |
-// | blood                       | dermal blood content (same profile rule, both dermis layers)| % |
-// | oxygenation                 | oxygenated fraction of the blood                            | % |
-// | water_reduction             | water reduction of every layer (Fig. 14's dehydration)      | % |
-// | stratum_corneum_thickness   | stratum corneum thickness                                   | cm
-// | | epidermis_thickness         | granulosum + spinosum + basale, ratios kept                 |
-// cm   | | papillary_dermis_thickness  | papillary dermis thickness | cm   | |
-// reticular_dermis_thickness  | reticular dermis thickness                                  | cm |
+// | melanosome                  | melanosome content of the most pigmented epidermal layer;   | %    |
+// |                             | the other layers keep their ratio to it                     |      |
+// | colloidal                   | colloidal melanin content (same profile rule)              | %    |
+// | blood                       | dermal blood content (same profile rule, both dermis layers)| %    |
+// | oxygenation                 | oxygenated fraction of the blood                            | %    |
+// | water_reduction             | water reduction of every layer (Fig. 14's dehydration)      | %    |
+// | stratum_corneum_thickness   | stratum corneum thickness                                   | cm   |
+// | epidermis_thickness         | granulosum + spinosum + basale, ratios kept                 | cm   |
+// | papillary_dermis_thickness  | papillary dermis thickness                                  | cm   |
+// | reticular_dermis_thickness  | reticular dermis thickness                                  | cm   |
 //
 // Uncertainties (FittedQuantity::uncertainty) come from the Jacobian at the optimum and the
 // residual variance. They leave out the frozen noise of the fit's own seed, which is correlated

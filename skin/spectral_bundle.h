@@ -4,13 +4,13 @@
 // variance of a wavelength's weight grows with how differently the other members would have
 // sampled the path. Two laws change across the spectrum enough to matter, so they bound a bundle:
 //
-// | law                                | bound within a bundle |
+// | law                                | bound within a bundle                                      |
 // |------------------------------------|------------------------------------------------------------|
-// | Algorithm 2's θo (780–1400 nm)     | θo = 0 and θo > 0 never mix; ln(θo_max/θo_min) ≤
-// maxLogAngleSpread | | Rayleigh, optical depth τ = μR·d   | min(ln(τ_max/τ_min), τ_max − τ_min) ≤
-// maxRayleighSpread    | |  of the papillary dermis           |  (a ratio bound where the layer is
-// thick, a difference     | |                                    |  bound where Rayleigh is rare) |
-// | a smooth surface (no roughness)    | one surface index per bundle (a delta refraction) |
+// | Algorithm 2's θo (780–1400 nm)     | θo = 0 and θo > 0 never mix; ln(θo_max/θo_min) ≤ maxLogAngleSpread |
+// | Rayleigh, optical depth τ = μR·d   | min(ln(τ_max/τ_min), τ_max − τ_min) ≤ maxRayleighSpread    |
+// |  of the papillary dermis           |  (a ratio bound where the layer is thick, a difference     |
+// |                                    |  bound where Rayleigh is rare)                             |
+// | a smooth surface (no roughness)    | one surface index per bundle (a delta refraction)          |
 //
 // Wavelengths are taken in increasing order and a bundle is closed when the next one would break a
 // bound or the bundle holds maxWavelengths.

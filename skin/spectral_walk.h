@@ -3,19 +3,19 @@
 // expectation of the per-wavelength analog walk (skin/skin_walk.h).
 //
 // What depends on λ, and how each dependence is carried (docs/interpretations.md, "Spectral walk"):
-// | dependence                         | treatment |
+// | dependence                         | treatment                                                   |
 // |------------------------------------|-------------------------------------------------------------|
-// | absorption by the layers (Eq. 3)   | weight exp(−μa(λ)·ℓ) per layer stay, never sampled | |
-// melanin inside melanosomes         | the internal path (λ-free geometry) traced or drawn from the
-// | |                                    | path-length table; weight exp(−μa_mel(λ)·ℓ_melanin) | |
-// Rayleigh (λ⁻⁴, once per pass)      | sampled with the hero's coefficient; path-density ratio | |
-// Algorithm 2's θo(λ), 780–1400 nm   | sampled with the hero's θo; path-density ratio | | rough
-// air–skin surface (n(λ))      | facet drawn once; reflection: Fresnel ratio; transmission:  | | |
-// the hero's refracted direction, density of each λ through   | | | its own generalised half vector
-// (Walter et al. 2007)        | | smooth bottom into a fixed index   | Fresnel ratio; transmitted
-// directions per λ (path ends)     | | layer/layer and melanin/layer      | index ratios do not
-// depend on λ (skin/layer_refractive_     | | interfaces                         | index.h): shared
-// exactly                                    |
+// | absorption by the layers (Eq. 3)   | weight exp(−μa(λ)·ℓ) per layer stay, never sampled          |
+// | melanin inside melanosomes         | the internal path (λ-free geometry) traced or drawn from the |
+// |                                    | path-length table; weight exp(−μa_mel(λ)·ℓ_melanin)         |
+// | Rayleigh (λ⁻⁴, once per pass)      | sampled with the hero's coefficient; path-density ratio     |
+// | Algorithm 2's θo(λ), 780–1400 nm   | sampled with the hero's θo; path-density ratio              |
+// | rough air–skin surface (n(λ))      | facet drawn once; reflection: Fresnel ratio; transmission:  |
+// |                                    | the hero's refracted direction, density of each λ through   |
+// |                                    | its own generalised half vector (Walter et al. 2007)        |
+// | smooth bottom into a fixed index   | Fresnel ratio; transmitted directions per λ (path ends)     |
+// | layer/layer and melanin/layer      | index ratios do not depend on λ (skin/layer_refractive_     |
+// | interfaces                         | index.h): shared exactly                                    |
 //
 // Hero-wavelength sampling (Wilkie et al. 2014) with the balance heuristic over the bundle: each
 // path draws its hero uniformly among the bundle's wavelengths and makes every λ-dependent choice

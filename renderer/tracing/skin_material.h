@@ -2,13 +2,12 @@
 // (skin/skin_walk.h) simulates both the rough-surface reflection and the subsurface transport, and
 // its outcome drives the path (paper Sec. 4; docs/architecture.md, "Data flow").
 //
-// | parameter (MaterialDesc::skin)  | meaning |
+// | parameter (MaterialDesc::skin)  | meaning                                                      |
 // |---------------------------------|--------------------------------------------------------------|
-// | specimen, overrides             | the layered skin (Tables 1–2), loaded from scenes/specimens/
-// | | water_reduction                 | extra fraction r: water × (1 − r_specimen)(1 − r) | |
-// melanin_map, min, max           | UV texture t → melanin multiplier min + (max − min)·t        |
-// | freckles                        | procedural spots (renderer/tracing/freckle_field.h),
-// multiplier      |
+// | specimen, overrides             | the layered skin (Tables 1–2), loaded from scenes/specimens/ |
+// | water_reduction                 | extra fraction r: water × (1 − r_specimen)(1 − r)            |
+// | melanin_map, min, max           | UV texture t → melanin multiplier min + (max − min)·t        |
+// | freckles                        | procedural spots (renderer/tracing/freckle_field.h), multiplier      |
 //
 // SPECTRAL ESTIMATOR (the default, scene key integrator.estimator = "spectral"): the camera path
 // carries every channel of its band, and the walk is the spectral walk (skin/spectral_walk.h) of
