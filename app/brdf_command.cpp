@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
 #include "app/option_checks.h"
@@ -43,7 +44,7 @@ struct BrdfArguments {
   std::string out;
   std::string plot;
   int threads = 0;
-  std::string estimator = "spectral";
+  skin::Estimator estimator = skin::Estimator::Spectral;
 };
 
 std::string formatCsv(const skin::DirectionBins& bins, const skin::ReflectionDistribution& d) {
@@ -178,13 +179,8 @@ void registerBrdfCommand(CLI::App& app) {
                  "Average over 380–780 nm every 10 nm, equal weight per wavelength")
       ->excludes(wavelengths);
   addEstimatorOption(*command, args->estimator);
-  command->add_option("--rays", args->rays, "Rays per wavelength")
-      ->check(unsignedRange(1, std::uint64_t{1} << 40))
-      ->capture_default_str();
-  command
-      ->add_option("--seed", args->seed,
-                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
-      ->check(seedRange());
+  addRaysOption(*command, args->rays, "Rays per wavelength");
+  addSeedOption(*command, args->seed);
   command
       ->add_option("--polar-bins", args->polarBins, "Bins of the reflection angle over [0°, 90°]")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1800}))
@@ -197,8 +193,7 @@ void registerBrdfCommand(CLI::App& app) {
   command->add_option("--out", args->out, "CSV file to write, one row per (polar, azimuth) bin")
       ->required();
   command->add_option("--plot", args->plot, "PNG of the in-plane cut (φ = 0° and 180°) to write");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addThreadsOption(*command, args->threads);
   command->callback([args] { runBrdf(*args); });
 }
 

@@ -2,23 +2,22 @@
 
 #include <tbb/parallel_for.h>
 
+#include "app/enum_option.h"
 #include "skin/spectral_simulation.h"
 
 namespace hylios {
 
-void addEstimatorOption(CLI::App& command, std::string& estimator) {
-  command
-      .add_option(
-          "--estimator", estimator,
-          "spectral (default: one path carries a bundle of wavelengths, absorption as weight) or "
-          "per-wavelength (one analog walk per wavelength and ray: the reference)")
-      ->check(CLI::IsMember({"spectral", "per-wavelength"}));
+void addEstimatorOption(CLI::App& command, skin::Estimator& estimator) {
+  addEnumOption(
+      command, "--estimator", estimator, skin::kEstimatorNames,
+      "spectral (default: one path carries a bundle of wavelengths, absorption as "
+      "weight) or per-wavelength (one analog walk per wavelength and ray: the reference)");
 }
 
-std::vector<skin::SkinTally> simulateWithEstimator(const std::string& estimator,
+std::vector<skin::SkinTally> simulateWithEstimator(skin::Estimator estimator,
                                                    const std::vector<skin::SkinOptics>& optics,
                                                    const skin::WalkRunOptions& run) {
-  if (estimator == "spectral") {
+  if (estimator == skin::Estimator::Spectral) {
     return skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
   }
   std::vector<skin::SkinTally> tallies(optics.size());

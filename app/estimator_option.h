@@ -3,7 +3,6 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
-#include <string>
 #include <vector>
 
 #include "skin/estimator.h"
@@ -11,12 +10,13 @@
 
 namespace hylios {
 
-/// Adds --estimator spectral|per-wavelength (default spectral) writing into `estimator`.
-void addEstimatorOption(CLI::App& command, std::string& estimator);
+/// Adds --estimator spectral|per-wavelength (default: `estimator` as it is, spectral in the
+/// commands) writing into `estimator`; other text is refused with parseEnum's message.
+void addEstimatorOption(CLI::App& command, skin::Estimator& estimator);
 
 /// One tally per optics: the analog walk per wavelength (per-wavelength), or the spectral walk
 /// with internal melanosome paths drawn from its table (spectral; skin/spectral_simulation.h).
-std::vector<skin::SkinTally> simulateWithEstimator(const std::string& estimator,
+std::vector<skin::SkinTally> simulateWithEstimator(skin::Estimator estimator,
                                                    const std::vector<skin::SkinOptics>& optics,
                                                    const skin::WalkRunOptions& run);
 

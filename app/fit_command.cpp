@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/gnuplot_plot.h"
 #include "app/measured_spectrum.h"
 #include "app/option_checks.h"
@@ -196,20 +197,16 @@ void registerFitCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", args->out, "Specimen file (TOML) to write")->required();
   command->add_option("--plot", args->plot, "PNG plot of measured, start and fitted curves");
-  command->add_option("--rays", args->rays, "Rays per wavelength and curve evaluation")
-      ->check(unsignedRange(100, std::uint64_t{1} << 32))
-      ->capture_default_str();
-  command
-      ->add_option(
-          "--seed", args->seed,
-          "Random seed in [0, 2^63-1], the same for every evaluation (common random numbers)")
-      ->check(seedRange());
+  addRaysOption(*command, args->rays, "Rays per wavelength and curve evaluation", 100,
+                std::uint64_t{1} << 32);
+  addSeedOption(
+      *command, args->seed,
+      "Random seed in [0, 2^63-1], the same for every evaluation (common random numbers)");
   command
       ->add_option("--max-iterations", args->maxIterations,
                    "Levenberg–Marquardt iterations at most")
       ->check(CLI::Range(1, 1000));
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addThreadsOption(*command, args->threads);
   command->callback([args] { runFit(*args); });
 }
 

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
 #include "app/option_checks.h"
@@ -40,7 +41,7 @@ struct ForwardProfileArguments {
   std::string out;
   std::string plot;
   int threads = 0;
-  std::string estimator = "spectral";
+  skin::Estimator estimator = skin::Estimator::Spectral;
 };
 
 /// The index below the stratum basale: "matched" or a finite number ≥ 1.
@@ -137,13 +138,8 @@ void registerForwardProfileCommand(CLI::App& app) {
       ->check(finiteRange(0, 1e6))
       ->capture_default_str();
   addEstimatorOption(*command, args->estimator);
-  command->add_option("--rays", args->rays, "Rays")
-      ->check(unsignedRange(1, std::uint64_t{1} << 40))
-      ->capture_default_str();
-  command
-      ->add_option("--seed", args->seed,
-                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
-      ->check(seedRange());
+  addRaysOption(*command, args->rays, "Rays");
+  addSeedOption(*command, args->seed);
   command
       ->add_option("--polar-bins", args->polarBins,
                    "Bins of the angle from the inward normal over [0°, 90°]")
@@ -156,8 +152,7 @@ void registerForwardProfileCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", args->out, "CSV file to write, one row per polar bin")->required();
   command->add_option("--plot", args->plot, "PNG plot to write");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addThreadsOption(*command, args->threads);
   command->callback([args] { runForwardProfile(*args); });
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
 #include "app/option_checks.h"
@@ -35,7 +36,7 @@ struct RadialProfileArguments {
   std::string out;
   std::string plot;
   int threads = 0;
-  std::string estimator = "spectral";
+  skin::Estimator estimator = skin::Estimator::Spectral;
 };
 
 std::string formatCsv(const skin::RadialProfile& p) {
@@ -116,13 +117,8 @@ void registerRadialProfileCommand(CLI::App& app) {
       ->check(finiteRange(0.0, 89.999))
       ->capture_default_str();
   addEstimatorOption(*command, args->estimator);
-  command->add_option("--rays", args->rays, "Rays")
-      ->check(unsignedRange(1, std::uint64_t{1} << 40))
-      ->capture_default_str();
-  command
-      ->add_option("--seed", args->seed,
-                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
-      ->check(seedRange());
+  addRaysOption(*command, args->rays, "Rays");
+  addSeedOption(*command, args->seed);
   command
       ->add_option("--max-radius-cm", args->maxRadiusCm,
                    "Outer radius of the last annulus, cm, in [1e-4, 100] (1 µm to 1 m)")
@@ -133,8 +129,7 @@ void registerRadialProfileCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", args->out, "CSV file to write, one row per annulus")->required();
   command->add_option("--plot", args->plot, "PNG plot (log R) to write");
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addThreadsOption(*command, args->threads);
   command->callback([args] { runRadialProfile(*args); });
 }
 

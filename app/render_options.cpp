@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "app/common_options.h"
 #include "app/enum_option.h"
 #include "app/option_checks.h"
 #include "app/progress_bar.h"
@@ -42,8 +43,7 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_option("--spp", options.spp, "Samples per pixel (default: the scene's)")
       ->check(CLI::Range(1, 1 << 24));
   command.add_option("--resolution", options.resolution, "WxH in pixels (default: the scene's)");
-  command.add_option("--threads", options.threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addThreadsOption(command, options.threads);
   addEnumOption(
       command, "--skin-model", options.skinMode, skin::kSkinModeNames,
       "walk (exact HyLIoS walk per hit) or table (tabulated fast path); default: the scene's");
@@ -55,14 +55,10 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
       ->check(finiteRange(0.0, 1.0));
   command.add_flag("--explain", options.explain,
                    "Print the effect plan (process, layer, optical depth, kept or skipped)");
-  command
-      .add_option(
-          "--estimator", options.estimator,
-          "spectral (a path carries every channel of a band; skin runs the spectral walk) or "
-          "per-wavelength (one channel per path, the analog walk: the reference); default: the "
-          "scene's, "
-          "else spectral")
-      ->check(CLI::IsMember({"spectral", "per-wavelength"}));
+  addEnumOption(command, "--estimator", options.estimator, skin::kEstimatorNames,
+                "spectral (a path carries every channel of a band; skin runs the spectral walk) or "
+                "per-wavelength (one channel per path, the analog walk: the reference); default: "
+                "the scene's, else spectral");
   command
       .add_option("--noise-target", options.noiseTarget,
                   "Render in passes until the estimated median per-pixel relative noise over the "
@@ -71,6 +67,10 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
                   "is reached, "
                   "e.g. 0.05")
       ->check(finiteRange(1e-6, 10.0));
+  addEnumOption(command, "--sampler", options.sampler, kSamplerNames,
+                "independent (every number of a camera path independent) or sobol "
+                "(Owen-scrambled Sobol' points per pixel for the camera sample and the first "
+                "light samples and bounces); default: the scene's, else independent");
 }
 
 RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {
@@ -85,7 +85,8 @@ RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {
   settings.skinMode = options.skinMode;
   if (options.effectTolerance >= 0) settings.effectTolerance = options.effectTolerance;
   settings.explain = options.explain;
-  if (!options.estimator.empty()) settings.estimator = skin::parseEstimator(options.estimator);
+  settings.estimator = options.estimator;
+  settings.sampler = options.sampler;
   if (options.noiseTarget >= 0) settings.noiseTarget = options.noiseTarget;
   settings.progress = progressBarFactory();
   return settings;

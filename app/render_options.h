@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "renderer/tracing/render_job.h"
+#include "skin/estimator.h"
 #include "skin/skin_mode.h"
 
 namespace hylios {
@@ -22,11 +23,12 @@ struct RenderCommandOptions {
   std::optional<skin::SkinMode> skinMode;  ///< unset: the scene's
   double effectTolerance = -1;             ///< < 0: the scene's
   bool explain = false;
-  std::string estimator;    ///< "": the scene's, else spectral or per-wavelength
-  double noiseTarget = -1;  ///< < 0: the scene's (if any)
+  std::optional<skin::Estimator> estimator;  ///< unset: the scene's
+  double noiseTarget = -1;                   ///< < 0: the scene's (if any)
+  std::optional<SamplerKind> sampler;        ///< unset: the scene's
 };
-/// Adds --spp, --resolution, --threads, --skin-model, --epsilon, --explain, --estimator and
-/// --noise-target to `command`.
+/// Adds --spp, --resolution, --threads, --skin-model, --epsilon, --explain, --estimator,
+/// --noise-target and --sampler to `command`.
 void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options);
 /// The settings of `options`, with a progress bar on stderr (drawn only on a terminal).
 RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options);

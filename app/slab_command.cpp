@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/enum_option.h"
 #include "app/option_checks.h"
 #include "app/slab_layer_spec.h"
 #include "skin/core/atomic_file.h"
@@ -24,7 +25,8 @@ struct SlabOptions {
   double nAbove = 1.0, nBelow = 1.0, angleDeg = 0.0;
   std::vector<std::string> layers;
   std::uint64_t rays = 1000000, seed = 1;
-  std::string out, scheme = "weighted";
+  std::string out;
+  skin::AbsorptionScheme scheme = skin::AbsorptionScheme::WeightWithRoulette;
   bool diffuse = false;
   int threads = 0;
 };
@@ -57,7 +59,7 @@ void runSlab(const SlabOptions& o) {
   skin::SlabRunOptions run;
   run.photons = o.rays;
   run.seed = o.seed;
-  if (o.scheme == "weighted") run.scheme = skin::AbsorptionScheme::WeightWithRoulette;
+  run.scheme = o.scheme;
   if (o.rays == 0) throw std::invalid_argument("--rays must be at least 1");
   if (o.threads < 0) throw std::invalid_argument("--threads must be >= 0 (0: all cores)");
   const ThreadLimit threadLimit(o.threads);
@@ -97,12 +99,9 @@ void registerSlabCommand(CLI::App& app) {
   sub->add_option("--seed", options->seed, "random seed in [0, 2^63-1]")
       ->check(seedRange())
       ->capture_default_str();
-  sub->add_option("--scheme", options->scheme,
-                  "absorption scoring: weighted (default; absorption as weight, MCML's implicit "
-                  "capture with "
-                  "roulette) or analog (the packet dies where it is absorbed)")
-      ->check(CLI::IsMember({"analog", "weighted"}))
-      ->capture_default_str();
+  addEnumOption(*sub, "--scheme", options->scheme, skin::kAbsorptionSchemeNames,
+                "absorption scoring: weighted (default; absorption as weight, MCML's implicit "
+                "capture with roulette) or analog (the packet dies where it is absorbed)");
   sub->add_option("--threads", options->threads, "worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

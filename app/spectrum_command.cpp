@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/enum_option.h"
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
@@ -45,7 +46,7 @@ struct SpectrumArguments {
   bool explain = false;
   skin::SkinMode skinModel =
       skin::SkinMode::Walk;  ///< Table: rays sampled from the cached exit table (skin/exit_table.h)
-  std::string estimator = "spectral";  ///< or "per-wavelength" (the analog walk, the reference)
+  skin::Estimator estimator = skin::Estimator::Spectral;  ///< PerWavelength: the reference
 };
 
 /// Full plan tables up to this many wavelengths, one summary line each beyond.
@@ -167,7 +168,7 @@ void runSpectrum(const SpectrumArguments& args) {
   std::vector<skin::SkinTally> tallies(wavelengths.size());
   std::vector<std::optional<skin::EffectPlan>> plans(wavelengths.size());
   ProgressBar progress("spectrum " + specimen.name, wavelengths.size());
-  if (args.estimator == "spectral" && args.skinModel == skin::SkinMode::Walk) {
+  if (args.estimator == skin::Estimator::Spectral && args.skinModel == skin::SkinMode::Walk) {
     // One path per bundle of wavelengths, the full model (no effect plan: bound 0).
     tallies = skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
     progress.advance(wavelengths.size());
@@ -208,12 +209,8 @@ void registerSpectrumCommand(CLI::App& app) {
   command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
       ->check(finiteRange(0.0, 89.999));
   command->add_option("--wavelengths", args->wavelengths, "start:stop:step or a comma list, nm");
-  command->add_option("--rays", args->rays, "Rays per wavelength")
-      ->check(unsignedRange(1, std::uint64_t{1} << 40));
-  command
-      ->add_option("--seed", args->seed,
-                   "Random seed in [0, 2^63-1] (same seed, same output at any thread count)")
-      ->check(seedRange());
+  addRaysOption(*command, args->rays, "Rays per wavelength");
+  addSeedOption(*command, args->seed);
   command->add_option("--out", args->out, "CSV file to write")->required();
   command->add_option("--plot", args->plot, "PNG plot to write");
   command->add_option("--measured", args->measured,
@@ -223,8 +220,7 @@ void registerSpectrumCommand(CLI::App& app) {
       "walk (exact HyLIoS walk per ray) or table (rays sampled from exit tables cached in "
       "$HYLIOS_CACHE_DIR, else $XDG_CACHE_HOME/hylios or ~/.cache/hylios)");
   addEstimatorOption(*command, args->estimator);
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addThreadsOption(*command, args->threads);
   command
       ->add_option(
           "--epsilon", args->effectTolerance,

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/option_checks.h"
+#include "app/common_options.h"
 #include "app/validation_report.h"
 #include "skin/core/thread_limit.h"
 
@@ -27,17 +27,12 @@ void registerValidateCommand(CLI::App& app) {
                                          "11); writes DIR/validation.md and PNG plots");
   command->add_option("--out", args->out, "Folder for validation.md and its plots")
       ->capture_default_str();
-  command
-      ->add_option("--rays", args->rays,
-                   "Rays per wavelength (the visible BRDF uses a fifth per wavelength)")
-      ->check(unsignedRange(100, std::uint64_t{1} << 36))
-      ->capture_default_str();
-  command
-      ->add_option("--seed", args->seed,
-                   "Random seed in [0, 2^63-1] (same seed, same report at any thread count)")
-      ->check(seedRange());
-  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addRaysOption(*command, args->rays,
+                "Rays per wavelength (the visible BRDF uses a fifth per wavelength)", 100,
+                std::uint64_t{1} << 36);
+  addSeedOption(*command, args->seed,
+                "Random seed in [0, 2^63-1] (same seed, same report at any thread count)");
+  addThreadsOption(*command, args->threads);
   command->callback([args] {
     const ThreadLimit limit(args->threads);
     ValidationOptions options;

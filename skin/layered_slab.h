@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "skin/core/enum_names.h"
 #include "skin/core/random.h"
 #include "skin/core/statistics.h"
 
@@ -44,6 +45,9 @@ void validateSlabProblem(const SlabProblem& problem);
 /// interaction deposits the fraction mua/mut of the weight and the packet goes on with the rest;
 /// below weight 1e-4 it survives a Russian roulette with chance 1/10 and weight x10 (unbiased).
 enum class AbsorptionScheme { Analog, WeightWithRoulette };
+/// Named "analog" / "weighted" on the command line (`hylios slab --scheme`).
+inline constexpr EnumNames<AbsorptionScheme, 2> kAbsorptionSchemeNames{
+    {{AbsorptionScheme::WeightWithRoulette, "weighted"}, {AbsorptionScheme::Analog, "analog"}}};
 
 /// One packet's scores, in units of the incident power (the specular part is not in them).
 struct PhotonScores {

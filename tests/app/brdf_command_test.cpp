@@ -70,7 +70,8 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
   run.rays = 3000;
   run.seed = 5;
   const skin::SkinTally tally =
-      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run)
+      simulateWithEstimator(skin::Estimator::Spectral,
+                            {skin::computeSkinOptics(specimen, spectra, 550)}, run)
           .front();
   EXPECT_NEAR(reflectance, tally.reflectance().mean, 1e-5);
   EXPECT_NEAR(surfaceReflectance, tally.surfaceReflectance().mean, 1e-5);

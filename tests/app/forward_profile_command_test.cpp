@@ -54,7 +54,8 @@ TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
   run.seed = 3;
   run.walk.deepestLayer = skin::Layer::StratumBasale;
   run.walk.belowRefractiveIndex = optics[skin::Layer::StratumBasale].refractiveIndex;
-  const skin::SkinTally tally = simulateWithEstimator("spectral", {optics}, run).front();
+  const skin::SkinTally tally =
+      simulateWithEstimator(skin::Estimator::Spectral, {optics}, run).front();
   EXPECT_NEAR(transmitted, tally.transmittance().mean, 1e-5);
   EXPECT_GT(tally.transmittance().mean, 0.1);  // 400 nm: a thin epidermis lets much through
   EXPECT_GT(std::filesystem::file_size(png), 1000u);

@@ -55,7 +55,8 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
   run.rays = 3000;
   run.seed = 2;
   const skin::SkinTally tally =
-      simulateWithEstimator("spectral", {skin::computeSkinOptics(specimen, spectra, 550)}, run)
+      simulateWithEstimator(skin::Estimator::Spectral,
+                            {skin::computeSkinOptics(specimen, spectra, 550)}, run)
           .front();
   // Exits beyond 2 cm from the entry point are rare but possible: the annuli hold at most R_d.
   EXPECT_LE(subsurface, tally.subsurfaceReflectance().mean + 1e-5);
