@@ -17,10 +17,9 @@
 #include "app/option_checks.h"
 #include "app/progress_bar.h"
 #include "app/specimen_options.h"
+#include "app/spectrum_wavelength.h"
 #include "app/wavelength_list.h"
 #include "renderer/scene/data_paths.h"
-#include "renderer/tracing/exit_table_cache.h"
-#include "renderer/tracing/skin_table_cache.h"
 #include "skin/core/atomic_file.h"
 #include "skin/core/thread_limit.h"
 #include "skin/effect_plan.h"
@@ -51,20 +50,6 @@ struct SpectrumArguments {
 
 /// Full plan tables up to this many wavelengths, one summary line each beyond.
 constexpr std::size_t kMaxExplainTables = 8;
-/// Pilot rays of the effect planner per wavelength (skin/effect_plan.h).
-constexpr std::uint64_t kSpectrumPilotRays = 2000;
-
-/// The walk to run at one wavelength: the planned optics and switches, or the full model when
-/// ε = 0 and no plan is to be printed (no pilot then). Also returns the plan when one was made.
-std::optional<skin::EffectPlan> planWavelength(const SpectrumArguments& args,
-                                               const skin::SkinOptics& optics) {
-  if (args.effectTolerance == 0 && !args.explain) return std::nullopt;
-  skin::PlanOptions options;
-  options.incidenceDeg = {args.angleDeg};
-  options.pilotRays = kSpectrumPilotRays;
-  options.seed = args.seed;
-  return skin::planEffects(optics, args.effectTolerance, options);
-}
 
 void printPlans(const std::vector<std::optional<skin::EffectPlan>>& plans) {
   for (const auto& plan : plans)
@@ -127,20 +112,6 @@ void plotSpectrum(const SpectrumArguments& args, const std::string& specimenName
   plotPanels(args.plot, title.str(), {panel}, 1, 1100, 650);
 }
 
-/// Table mode: `args.rays` rays sampled from the exit table of `walk` (ExitTableCache::shared(),
-/// the renderer's table settings), ray i on Rng(seed, wavelengthStream(λ), i) like the walk.
-skin::SkinTally tableTally(const skin::SkinWalk& walk, const SpectrumArguments& args) {
-  const auto table = ExitTableCache::shared().get(walk, SkinTableCache::renderSettings());
-  const skin::Vec3 incident = skin::incidentDirection(args.angleDeg);
-  const std::uint64_t stream = skin::wavelengthStream(walk.optics().wavelengthNm);
-  skin::SkinTally tally;
-  for (std::uint64_t i = 0; i < args.rays; ++i) {
-    skin::Rng rng(args.seed, stream, i);
-    tally.record(table->sample(incident, rng));
-  }
-  return tally;
-}
-
 /// The file of --measured FILE:COLUMN.
 std::string measuredFile(const std::string& measured) {
   const auto colon = measured.rfind(':');
@@ -173,14 +144,12 @@ void runSpectrum(const SpectrumArguments& args) {
     tallies = skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
     progress.advance(wavelengths.size());
   } else {
+    const SpectrumWavelengthSettings settings{args.angleDeg,        args.rays,    args.seed,
+                                              args.effectTolerance, args.explain, args.skinModel};
     tbb::parallel_for(std::size_t{0}, wavelengths.size(), [&](std::size_t i) {
-      plans[i] = planWavelength(args, optics[i]);
-      skin::WalkRunOptions planned = run;
-      if (plans[i]) planned.walk = plans[i]->walk;
-      const skin::SkinOptics& walked = plans[i] ? plans[i]->optics : optics[i];
-      tallies[i] = args.skinModel == skin::SkinMode::Table
-                       ? tableTally(skin::SkinWalk(walked, planned.walk), args)
-                       : skin::simulateSkin(walked, planned);
+      SpectrumWavelengthResult result = simulateSpectrumWavelength(optics[i], settings);
+      tallies[i] = std::move(result.tally);
+      plans[i] = std::move(result.plan);
       progress.advance();
     });
   }
