@@ -41,8 +41,12 @@ void addSpecimenOptions(CLI::App& command, SpecimenOptions& options) {
 
 skin::Specimen loadSpecimenWithOverrides(const SpecimenOptions& options) {
   skin::Specimen specimen = skin::loadSpecimen(options.specimen, specimenDir());
-  for (const auto& text : options.overrides) skin::applyOverride(specimen, parseOverride(text));
+  applyOverrides(specimen, options.overrides);
   return specimen;
+}
+
+void applyOverrides(skin::Specimen& specimen, const std::vector<std::string>& overrides) {
+  for (const auto& text : overrides) skin::applyOverride(specimen, parseOverride(text));
 }
 
 }  // namespace hylios

@@ -20,5 +20,8 @@ void addSpecimenOptions(CLI::App& command, SpecimenOptions& options);
 /// Loads the specimen (by name from scenes/specimens/ or by path) and applies the overrides in
 /// order. Throws skin::SpecimenError with the offending file position or "--set key=value".
 skin::Specimen loadSpecimenWithOverrides(const SpecimenOptions& options);
+/// Applies overrides "key=value" (as --set) in order. Throws skin::SpecimenError naming
+/// "--set key=value".
+void applyOverrides(skin::Specimen& specimen, const std::vector<std::string>& overrides);
 
 }  // namespace hylios
