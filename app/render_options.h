@@ -25,7 +25,8 @@ struct RenderCommandOptions {
   bool explain = false;
   std::optional<skin::Estimator> estimator;  ///< unset: the scene's
   double noiseTarget = -1;                   ///< < 0: the scene's (if any)
-  std::optional<SamplerKind> sampler;        ///< unset: the scene's
+  /// --sampler (renderer/tracing/pixel_sampler.h); unset: the scene's.
+  std::optional<SamplerKind> sampler;
 };
 /// Adds --spp, --resolution, --threads, --skin-model, --epsilon, --explain, --estimator,
 /// --noise-target and --sampler to `command`.

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/scene/sampler_kind.h"
 #include "skin/core/source_location.h"
 #include "skin/effect_plan.h"
 #include "skin/estimator.h"
@@ -145,6 +146,8 @@ struct IntegratorDesc {
   /// Render in passes until the film's estimated median per-pixel relative noise is at most this
   /// (every band, R, G, B and chromaticity), or spp is reached; unset: render spp samples.
   std::optional<double> noiseTarget;
+  /// The camera paths' numbers (renderer/tracing/pixel_sampler.h).
+  SamplerKind sampler = SamplerKind::Independent;
   SourceLocation where;
 };
 

@@ -27,7 +27,8 @@ const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
       {"film", {"resolution", "spp", "exposure", "band"}},
       {"film.band", {"name", "wavelength_nm", "preview_range", "range_nm", "step_nm"}},
       {"integrator",
-       {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target"}},
+       {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target",
+        "sampler"}},
       {"light",
        {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg",
         "shape"}},
@@ -241,6 +242,8 @@ IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
     d.estimator = *skin::parseEstimator(r.choice("estimator", {"spectral", "per-wavelength"}));
   if (r.has("noise_target"))
     d.noiseTarget = r.number("noise_target", NumberRange::closed(1e-6, 10.0));
+  if (r.has("sampler"))
+    d.sampler = *findEnum(r.choice("sampler", enumNameList(kSamplerNames)), kSamplerNames);
   r.finish("[integrator]");
   return d;
 }

@@ -35,10 +35,10 @@ double powerHeuristic(double pdfA, double pdfB) {
 }
 
 /// A cosine-distributed direction about unit `normal`.
-glm::dvec3 sampleCosine(const glm::dvec3& normal, skin::Rng& rng) {
-  const double u1 = rng.uniform(), u2 = rng.uniform();
+glm::dvec3 sampleCosine(const glm::dvec3& normal, SampleStream& samples) {
+  const std::array<double, 2> u = samples.get2D();
   const skin::Frame frame(toSkin(normal));
-  return glm::normalize(toGlm(frame.toWorld(skin::sampleCosineHemisphere(u1, u2))));
+  return glm::normalize(toGlm(frame.toWorld(skin::sampleCosineHemisphere(u[0], u[1]))));
 }
 
 }  // namespace
@@ -164,10 +164,14 @@ Ray Integrator::spawn(const glm::dvec3& point, const glm::dvec3& sideNormal,
 template <typename Lobe>
 std::optional<Integrator::DirectSample> Integrator::directLight(const glm::dvec3& point,
                                                                 const glm::dvec3& geometricNormal,
-                                                                skin::Rng& rng, bool deltaOnly,
+                                                                SampleStream& samples,
+                                                                bool deltaOnly,
                                                                 const Lobe& lobe) const {
-  const double uSelect = rng.uniform(), u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
-  const std::optional<LightSample> light = lights_->sampleGeometry(point, uSelect, u0, u1, u2);
+  // Light 1-D, triangle 1-D, position on it 2-D (environment: direction from u0, u1).
+  const double uSelect = samples.get1D(), u0 = samples.get1D();
+  const std::array<double, 2> u12 = samples.get2D();
+  const std::optional<LightSample> light =
+      lights_->sampleGeometry(point, uSelect, u0, u12[0], u12[1]);
   if (!light || (deltaOnly && !light->isDelta)) return std::nullopt;
   if (!(glm::dot(light->direction, geometricNormal) > 0)) return std::nullopt;
   const double f = lobe(light->direction);
@@ -189,7 +193,7 @@ void Integrator::addDirect(const std::optional<DirectSample>& direct, const Path
 }
 
 Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit,
-                                  skin::Rng& rng, double& beta) const {
+                                  SampleStream& samples, double& beta) const {
   const glm::dvec3 ng = hit.geometricNormal;
   const bool backFace = glm::dot(ray.direction, ng) > 0;
   const double cosIn = std::fabs(glm::dot(ray.direction, ng));
@@ -197,7 +201,7 @@ Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const 
   const glm::dvec3 facing = backFace ? -ng : ng;
   const skin::FresnelResult fr = skin::fresnel(cosIn, nFrom, nTo);
   glm::dvec3 direction;
-  if (rng.uniform() < fr.reflectance) {
+  if (samples.get1D() < fr.reflectance) {
     direction = ray.direction + facing * (2 * cosIn);
   } else {
     direction = toGlm(skin::refractDirection(toSkin(ray.direction), toSkin(facing), nFrom, nTo,
@@ -210,14 +214,20 @@ Ray Integrator::scatterDielectric(double refractiveIndex, const Ray& ray, const 
 
 void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, skin::Rng& rng,
                           RenderStats& stats, double* L) const {
+  SampleStream samples(rng);
+  radiance(cameraRay, spectrum, samples, stats, L);
+}
+
+void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, SampleStream& samples,
+                          RenderStats& stats, double* L) const {
   ++stats.paths;
   std::fill(L, L + spectrum.size(), 0.0);
-  tracePath(cameraRay, 0, std::vector<double>(spectrum.size(), 1.0), spectrum, rng, stats, L,
+  tracePath(cameraRay, 0, std::vector<double>(spectrum.size(), 1.0), spectrum, samples, stats, L,
             spectrum.spectral);
 }
 
 void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughput,
-                           const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
+                           const PathSpectrum& spectrum, SampleStream& samples, RenderStats& stats,
                            double* L, bool splitFirstSkinHit) const {
   const std::size_t n = spectrum.size();
   const int maxDepth = scene_.integrator.maxDepth;
@@ -248,7 +258,7 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
     const Material& material = materials_[materialOfShape_[hit->shape]];
     if (material.kind == MaterialDesc::Kind::Dielectric) {
       double scale = 1;  // the index is the same at every wavelength: the bundle stays together
-      ray = scatterDielectric(material.refractiveIndex, ray, *hit, rng, scale);
+      ray = scatterDielectric(material.refractiveIndex, ray, *hit, samples, scale);
       for (std::size_t i = 0; i < n; ++i) beta[i] *= scale;
       lastSpecular = true;
       continue;
@@ -266,12 +276,13 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       const bool split = splitFirstSkinHit && spectrum.spectral;
       splitFirstSkinHit = false;
       std::vector<double> surface(split ? n : 0, 0.0), before(split ? beta : beta + n, beta + n);
-      const SkinScatter s = scatterSkin(*material.skin, *hit, ray.direction, spectrum, rng, beta,
-                                        split ? surface.data() : nullptr);
+      const SkinScatter s = scatterSkin(*material.skin, *hit, ray.direction, spectrum,
+                                        samples.rng(), beta, split ? surface.data() : nullptr);
       if (s.surfaceBranch) {
         for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
+        SampleStream branch = samples.branch();
         traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth,
-                           std::move(surface), spectrum, rng, stats, L);
+                           std::move(surface), spectrum, branch, stats, L);
       }
       if (s.kind == SkinScatter::Kind::Absorbed) {
         ++stats.skinAbsorbed;
@@ -284,7 +295,7 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       if (s.kind == SkinScatter::Kind::SurfaceReflection) {
         ++stats.skinSurfaceExits;
         const glm::dvec3 incident = ray.direction, normal = s.shadingNormal;
-        addDirect(directLight(s.point, s.geometricNormal, rng, true,
+        addDirect(directLight(s.point, s.geometricNormal, samples, true,
                               [&](const glm::dvec3& w) {
                                 return material.skin->surfaceLobeDensity(incident, normal, w);
                               }),
@@ -312,11 +323,11 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
     // A Lambertian lobe: the diffuse material's, or the skin's exit lobe (albedo 1: the walk
     // already weighted the light that left).
     const auto lobe = [&](const glm::dvec3& w) { return std::max(0.0, glm::dot(w, ns)) / kPi; };
-    addDirect(directLight(point, ng, rng, false, lobe), spectrum, beta, lobeAlbedo, L);
+    addDirect(directLight(point, ng, samples, false, lobe), spectrum, beta, lobeAlbedo, L);
     if (lobeAlbedo)
       for (std::size_t i = 0; i < n; ++i) beta[i] *= lobeAlbedo[i];
     if (!anyThroughput()) break;
-    const glm::dvec3 direction = sampleCosine(ns, rng);
+    const glm::dvec3 direction = sampleCosine(ns, samples);
     if (!(glm::dot(direction, ng) > 0)) {
       ++stats.belowSurface;
       break;
@@ -339,11 +350,11 @@ double Integrator::radiance(const Ray& ray, std::size_t channel, skin::Rng& rng,
 void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit,
                                     const glm::dvec3& incident, const glm::dvec3& direction,
                                     int depth, std::vector<double> beta,
-                                    const PathSpectrum& spectrum, skin::Rng& rng,
+                                    const PathSpectrum& spectrum, SampleStream& samples,
                                     RenderStats& stats, double* L) const {
   ++stats.skinSurfaceExits;
   const FacingNormals facing = faceTheRay(incident, hit.geometricNormal, hit.shadingNormal);
-  addDirect(directLight(hit.position, facing.geometric, rng, true,
+  addDirect(directLight(hit.position, facing.geometric, samples, true,
                         [&](const glm::dvec3& w) {
                           return skin.surfaceLobeDensity(incident, facing.shading, w);
                         }),
@@ -354,7 +365,7 @@ void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& 
   }
   tracePath(
       spawn(hit.position, facing.geometric, direction, std::numeric_limits<double>::infinity()),
-      depth + 1, std::move(beta), spectrum, rng, stats, L, false);
+      depth + 1, std::move(beta), spectrum, samples, stats, L, false);
 }
 
 SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
@@ -475,7 +486,7 @@ bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
   std::mutex totalMutex;
   const std::uint64_t seed = scene_.integrator.seed;
   const std::uint64_t strata = spectral_ ? film.bandCount() : film.channels().size();
-  constexpr std::uint64_t kChannelRotationStream = ~std::uint64_t{0};
+  const PixelSampler sampler(scene_.integrator.sampler, seed, strata);
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, tiles, 1),
       [&](const tbb::blocked_range<std::size_t>& range) {
@@ -493,36 +504,31 @@ bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
               const std::uint64_t pixel =
                   static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) +
                   static_cast<std::uint64_t>(x);
-              // Bands (spectral) or channels (per-wavelength) are stratified over blocks of
-              // `strata` consecutive samples of the pixel (sample s takes slice s mod strata of [0,
-              // 1), jittered), each block with its own rotation (Cranley–Patterson) from its own
-              // stream: every complete block meets every band or channel once, whenever the render
-              // stops (noise targets).
+              // The sample's numbers (renderer/tracing/pixel_sampler.h): bands (spectral) or
+              // channels (per-wavelength) stratified over the pixel's samples, then the camera
+              // sample, then the path's decisions; the skin walks draw from rng.
               for (int s = firstSample; s < endSample; ++s) {
-                const std::uint64_t block = static_cast<std::uint64_t>(s) / strata;
-                const double rotation =
-                    skin::Rng(seed, pixel, kChannelRotationStream - block).uniform();
                 skin::Rng rng(seed, pixel, static_cast<std::uint64_t>(s));
-                double u =
-                    (static_cast<double>(static_cast<std::uint64_t>(s) % strata) + rng.uniform()) /
-                        static_cast<double>(strata) +
-                    rotation;
-                u -= std::floor(u);
-                u = u < 1.0 ? u : skin::kOneMinusEpsilon;
-                const double px = x + rng.uniform(), py = y + rng.uniform();
-                const double lu = rng.uniform(), lv = rng.uniform();
-                const Ray cameraRay = camera_->generateRay(px, py, lu, lv);
+                SampleStream samples = sampler.stream(pixel, static_cast<std::uint64_t>(s), rng);
+                const CameraSample c =
+                    sampler.cameraSample(pixel, static_cast<std::uint64_t>(s), samples);
+                const double u = c.band;
+                const Ray cameraRay =
+                    camera_->generateRay(x + c.filmX, y + c.filmY, c.lensU, c.lensV);
                 const bool odd = (s & 1) != 0;
                 if (spectral_) {  // the path carries every channel of a band
                   const std::size_t band = film.sampleBand(u);
                   const std::vector<std::size_t>& channels = film.bandChannels(band);
                   values.resize(channels.size());
                   radiance(cameraRay, PathSpectrum{channels.data(), channels.size(), band, true},
-                           rng, stats, values.data());
+                           samples, stats, values.data());
                   film.addBandSample(x, y, band, values.data(), odd);
                 } else {
                   const std::size_t channel = film.sampleChannel(u);
-                  film.addSample(x, y, channel, radiance(cameraRay, channel, rng, stats), odd);
+                  const std::size_t channels[1] = {channel};
+                  double value = 0;
+                  radiance(cameraRay, PathSpectrum{channels, 1, 0, false}, samples, stats, &value);
+                  film.addSample(x, y, channel, value, odd);
                 }
               }
             }

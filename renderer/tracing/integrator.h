@@ -17,9 +17,13 @@
 // max_depth counts scattering vertices (a skin walk is one): max_depth = 1 is direct lighting.
 // No Russian roulette: paths end at max_depth, by absorption, or by leaving the scene.
 //
-// Determinism: sample s of pixel p (p = y·width + x) draws every number from
-// skin::Rng(seed, p, s), and the pixels are split into 16×16 tiles, each written by one task; the
-// image is identical for any thread count (tbb::global_control chooses it).
+// Sample streams (renderer/tracing/pixel_sampler.h, [integrator] sampler): sample s of pixel p
+// (p = y·width + x) takes its camera sample and the integrator's decisions from a SampleStream —
+// independent: every number from skin::Rng(seed, p, s); sobol: the first dimensions from
+// Owen-scrambled Sobol' points of the pixel — and the skin walks from skin::Rng(seed, p, s).
+// Determinism: a sample's numbers depend only on (seed, p, s), and the pixels are split into 16×16
+// tiles, each written by one task; the image is identical for any thread count
+// (tbb::global_control chooses it).
 #pragma once
 #include <atomic>
 #include <cstddef>
@@ -37,6 +41,7 @@
 #include "renderer/tracing/camera.h"
 #include "renderer/tracing/embree_scene.h"
 #include "renderer/tracing/lights.h"
+#include "renderer/tracing/pixel_sampler.h"
 #include "renderer/tracing/render_progress.h"
 #include "renderer/tracing/skin_material.h"
 #include "skin/core/random.h"
@@ -117,6 +122,9 @@ class Integrator {
   /// Radiance along `ray` at each channel of `spectrum` (one path), into L[0 .. size).
   void radiance(const Ray& ray, const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats,
                 double* L) const;
+  /// The same with the path's numbers from `samples` (a pixel sampler's stream).
+  void radiance(const Ray& ray, const PathSpectrum& spectrum, SampleStream& samples,
+                RenderStats& stats, double* L) const;
   /// Radiance along `ray` at channel `channel` (one path, per-wavelength estimator).
   double radiance(const Ray& ray, std::size_t channel, skin::Rng& rng, RenderStats& stats) const;
   skin::Estimator estimator() const {
@@ -147,7 +155,7 @@ class Integrator {
   /// deltaOnly: only point/spot lights. nullopt when nothing arrives.
   template <typename Lobe>
   std::optional<DirectSample> directLight(const glm::dvec3& point,
-                                          const glm::dvec3& geometricNormal, skin::Rng& rng,
+                                          const glm::dvec3& geometricNormal, SampleStream& samples,
                                           bool deltaOnly, const Lobe& lobe) const;
   /// L[i] += beta[i] · albedo[i] (1 when null) · the direct sample at channel spectrum[i].
   void addDirect(const std::optional<DirectSample>& direct, const PathSpectrum& spectrum,
@@ -160,14 +168,14 @@ class Integrator {
   /// The rest of a path from `ray` (its vertex count so far `firstDepth`) with throughput
   /// `throughput`, adding into L; splitFirstSkinHit: the first skin hit splits its entry.
   void tracePath(Ray ray, int firstDepth, std::vector<double> throughput,
-                 const PathSpectrum& spectrum, skin::Rng& rng, RenderStats& stats, double* L,
+                 const PathSpectrum& spectrum, SampleStream& samples, RenderStats& stats, double* L,
                  bool splitFirstSkinHit) const;
   /// The surface reflection scored at a split skin entry: next-event estimation of delta lights
   /// with the model lobe, then the reflected ray as a path of its own (no further split).
   void traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit,
                           const glm::dvec3& incident, const glm::dvec3& direction, int depth,
-                          std::vector<double> beta, const PathSpectrum& spectrum, skin::Rng& rng,
-                          RenderStats& stats, double* L) const;
+                          std::vector<double> beta, const PathSpectrum& spectrum,
+                          SampleStream& samples, RenderStats& stats, double* L) const;
   /// Marks the pixels whose centre ray sees a shape that does not emit (the noise mask).
   void setCoverage(Film& film) const;
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
@@ -180,7 +188,7 @@ class Integrator {
   /// A smooth dielectric of index `refractiveIndex` at `hit`: Fresnel-chosen mirror reflection or
   /// refraction (beta takes the radiance scaling (n_from/n_to)²); the continued ray.
   Ray scatterDielectric(double refractiveIndex, const Ray& ray, const SurfaceHit& hit,
-                        skin::Rng& rng, double& beta) const;
+                        SampleStream& samples, double& beta) const;
   /// The material `index` of `scene` prepared for the channel wavelengths (skin: its walks or
   /// tables, only when a shape shows it). `spectra` may be null when the scene has no skin.
   static Material makeMaterial(const SceneDesc& scene, std::size_t index,

@@ -23,6 +23,7 @@ SceneDesc applyRenderSettings(SceneDesc scene, const RenderSettings& settings) {
   if (settings.effectTolerance) scene.integrator.effectTolerance = *settings.effectTolerance;
   if (settings.estimator) scene.integrator.estimator = *settings.estimator;
   if (settings.noiseTarget) scene.integrator.noiseTarget = *settings.noiseTarget;
+  if (settings.sampler) scene.integrator.sampler = *settings.sampler;
   return scene;
 }
 
@@ -30,7 +31,8 @@ std::vector<std::pair<std::string, std::string>> renderAttributes(const SceneDes
                                                                   const RenderResult& result) {
   std::vector<std::pair<std::string, std::string>> attributes = {
       {"hylios:seed", std::to_string(scene.integrator.seed)},
-      {"hylios:estimator", skin::estimatorName(scene.integrator.estimator)}};
+      {"hylios:estimator", skin::estimatorName(scene.integrator.estimator)},
+      {"hylios:sampler", std::string(enumName(scene.integrator.sampler, kSamplerNames))}};
   if (scene.integrator.noiseTarget) {
     std::ostringstream target;
     target.precision(17);

@@ -31,6 +31,8 @@ struct RenderSettings {
   bool explain = false;                      ///< print the effect plans before rendering
   std::optional<skin::Estimator> estimator;  ///< the scene's when unset
   std::optional<double> noiseTarget;  ///< the scene's when unset (renderer/image/render_noise.h)
+  /// The camera paths' numbers (renderer/tracing/pixel_sampler.h); the scene's when unset.
+  std::optional<SamplerKind> sampler;
   /// Interruptible renders (render --resume): asked between sample passes, true stops the render.
   std::function<bool()> stopRequested;
   /// A checkpoint's state to continue (readMatchingCheckpoint has checked it against the scene).
