@@ -17,12 +17,10 @@
 #include "app/gnuplot_plot.h"
 #include "app/option_checks.h"
 #include "app/progress_bar.h"
-#include "app/specimen_options.h"
+#include "app/walk_study.h"
 #include "app/wavelength_list.h"
-#include "renderer/scene/data_paths.h"
 #include "skin/core/atomic_file.h"
 #include "skin/core/constants.h"
-#include "skin/core/thread_limit.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
 
@@ -33,18 +31,12 @@ constexpr const char* kVisibleWavelengths = "380:780:10";
 constexpr double kDegPerRad = 180.0 / kPi;
 
 struct BrdfArguments {
-  SpecimenOptions specimen;
+  WalkStudyOptions study;
   double angleDeg = 45;
   std::string wavelengths;
   bool visible = false;
-  std::uint64_t rays = 200000;
-  std::uint64_t seed = 1;
   std::size_t polarBins = 18;
   std::size_t azimuthBins = 36;
-  std::string out;
-  std::string plot;
-  int threads = 0;
-  skin::Estimator estimator = skin::Estimator::Spectral;
 };
 
 std::string formatCsv(const skin::DirectionBins& bins, const skin::ReflectionDistribution& d) {
@@ -119,58 +111,50 @@ void plotInPlane(const BrdfArguments& args, const std::string& specimenName,
                    series("total R_t", cut.total, "linespoints lw 2 pt 9 ps 0.6")}};
   std::ostringstream title;
   title << "HyLIoS " << specimenName << ", incidence " << args.angleDeg << "°, "
-        << describeWavelengths(wavelengths) << ", " << args.rays << " rays per wavelength";
-  plotPanels(args.plot, title.str(), {panel}, 1, 1100, 650);
+        << describeWavelengths(wavelengths) << ", " << args.study.rays << " rays per wavelength";
+  plotPanels(args.study.plot, title.str(), {panel}, 1, 1100, 650);
 }
 
 void runBrdf(const BrdfArguments& args) {
   if (args.visible == !args.wavelengths.empty())
     throw std::invalid_argument(
         "hylios brdf: give exactly one of --wavelengths LIST and --visible");
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
-               {inputFile("--specimen", args.specimen.specimen)});
-  const ThreadLimit threadLimit(args.threads);
-  const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
-  const auto spectra = skin::SpectralDatabase::load(spectraDir());
+  const WalkStudy study(args.study);
+  const skin::Specimen& specimen = study.specimen();
   const std::vector<double> wavelengths =
       parseWavelengthList(args.visible ? kVisibleWavelengths : args.wavelengths);
-  std::vector<skin::SkinOptics> optics;  // first, so that a bad wavelength fails before any walk
-  for (double w : wavelengths) optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
+  const std::vector<skin::SkinOptics> optics = study.optics(wavelengths);
   const skin::DirectionBins bins(args.polarBins, args.azimuthBins);
-  skin::WalkRunOptions run;
-  run.incidenceDeg = args.angleDeg;
-  run.rays = args.rays;
-  run.seed = args.seed;
+  skin::WalkRunOptions run = study.run(args.angleDeg);
   run.tally.polarBins = args.polarBins;
   run.tally.azimuthBins = args.azimuthBins;
   std::vector<skin::ReflectionDistribution> perWavelength;
   ProgressBar progress("brdf " + specimen.name, wavelengths.size());
-  for (const skin::SkinTally& tally : simulateWithEstimator(args.estimator, optics, run))
+  for (const skin::SkinTally& tally : simulateWithEstimator(args.study.estimator, optics, run))
     perWavelength.push_back(skin::reflectionDistribution(tally));
   progress.advance(wavelengths.size());
   progress.finish();
   const skin::ReflectionDistribution d = skin::meanOverWavelengths(perWavelength);
-  writeTextAtomically(args.out, formatCsv(bins, d));
+  writeTextAtomically(args.study.out, formatCsv(bins, d));
   std::printf("%s, %s, incidence %g°: R_s = %.5f ± %.5f, R_d = %.5f ± %.5f, R_t = %.5f ± %.5f\n",
               specimen.name.c_str(), describeWavelengths(wavelengths).c_str(), args.angleDeg,
               d.surfaceReflectance.mean, d.surfaceReflectance.standardError,
               d.subsurfaceReflectance.mean, d.subsurfaceReflectance.standardError,
               d.totalReflectance.mean, d.totalReflectance.standardError);
-  if (!args.plot.empty()) plotInPlane(args, specimen.name, wavelengths, d);
+  if (!args.study.plot.empty()) plotInPlane(args, specimen.name, wavelengths, d);
 }
 
 }  // namespace
 
 void registerBrdfCommand(CLI::App& app) {
   auto args = std::make_shared<BrdfArguments>();
+  args->study.rays = 200000;
   CLI::App* command =
       app.add_subcommand("brdf",
                          "Angular distribution of reflected light: surface/subsurface/total per sr "
                          "and BRDF (CSV, optional in-plane plot)");
-  addSpecimenOptions(*command, args->specimen);
-  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
-      ->check(finiteRange(0.0, 89.999))
-      ->capture_default_str();
+  addWalkStudyOptions(*command, args->study, "Rays per wavelength");
+  addAngleOption(*command, args->angleDeg);
   auto* wavelengths = command->add_option(
       "--wavelengths", args->wavelengths,
       "start:stop:step or a comma list, nm; several are averaged with equal weight");
@@ -178,9 +162,6 @@ void registerBrdfCommand(CLI::App& app) {
       ->add_flag("--visible", args->visible,
                  "Average over 380–780 nm every 10 nm, equal weight per wavelength")
       ->excludes(wavelengths);
-  addEstimatorOption(*command, args->estimator);
-  addRaysOption(*command, args->rays, "Rays per wavelength");
-  addSeedOption(*command, args->seed);
   command
       ->add_option("--polar-bins", args->polarBins, "Bins of the reflection angle over [0°, 90°]")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1800}))
@@ -190,10 +171,9 @@ void registerBrdfCommand(CLI::App& app) {
                    "Bins of the azimuth over [−180°, 180°), 0° = specular side")
       ->check(CLI::Range(std::size_t{1}, std::size_t{3600}))
       ->capture_default_str();
-  command->add_option("--out", args->out, "CSV file to write, one row per (polar, azimuth) bin")
-      ->required();
-  command->add_option("--plot", args->plot, "PNG of the in-plane cut (φ = 0° and 180°) to write");
-  addThreadsOption(*command, args->threads);
+  addStudyOutputOptions(*command, args->study,
+                        "CSV file to write, one row per (polar, azimuth) bin",
+                        "PNG of the in-plane cut (φ = 0° and 180°) to write");
   command->callback([args] { runBrdf(*args); });
 }
 

@@ -11,6 +11,13 @@ CLI::Option* addRaysOption(CLI::App& command, std::uint64_t& rays, const std::st
       ->capture_default_str();
 }
 
+CLI::Option* addAngleOption(CLI::App& command, double& angleDeg) {
+  return command
+      .add_option("--angle", angleDeg, "Incidence angle from the normal, degrees [0, 90)")
+      ->check(finiteRange(0.0, 89.999))
+      ->capture_default_str();
+}
+
 CLI::Option* addSeedOption(CLI::App& command, std::uint64_t& seed, const std::string& help) {
   return command.add_option("--seed", seed, help)->check(seedRange());
 }

@@ -187,8 +187,7 @@ void registerFitCommand(CLI::App& app) {
       ->add_option("--measured", args->measured,
                    "FILE:COLUMN of the measured curve (first column: nm)")
       ->required();
-  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
-      ->check(finiteRange(0.0, 89.999));
+  addAngleOption(*command, args->angleDeg);
   command
       ->add_option("--wavelengths", args->wavelengths,
                    "start:stop:step or a comma list, nm (those the measurement covers are fitted)")

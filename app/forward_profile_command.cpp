@@ -18,11 +18,9 @@
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
 #include "app/option_checks.h"
-#include "app/specimen_options.h"
-#include "renderer/scene/data_paths.h"
+#include "app/walk_study.h"
 #include "skin/core/atomic_file.h"
 #include "skin/core/constants.h"
-#include "skin/core/thread_limit.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
 
@@ -32,16 +30,10 @@ namespace {
 constexpr double kRadPerDeg = kPi / 180.0;
 
 struct ForwardProfileArguments {
-  SpecimenOptions specimen;
+  WalkStudyOptions study;
   double wavelengthNm = 302;
-  std::uint64_t rays = 1000000;
-  std::uint64_t seed = 1;
   std::size_t polarBins = 18;
   std::string belowIndex = "matched";
-  std::string out;
-  std::string plot;
-  int threads = 0;
-  skin::Estimator estimator = skin::Estimator::Spectral;
 };
 
 /// The index below the stratum basale: "matched" or a finite number ≥ 1.
@@ -89,7 +81,7 @@ void plotProfile(const ForwardProfileArguments& args, const std::string& specime
   std::snprintf(
       title, sizeof title,
       "HyLIoS %s epidermis, %g nm, normal incidence, %llu rays, below n = %.3f: T = %.4f ± %.4f",
-      specimenName.c_str(), args.wavelengthNm, static_cast<unsigned long long>(args.rays),
+      specimenName.c_str(), args.wavelengthNm, static_cast<unsigned long long>(args.study.rays),
       belowIndex, p.transmittance.mean, p.transmittance.standardError);
   PlotPanel panel{
       "transmitted light per steradian, normalised to the normal direction (paper Fig. 8)",
@@ -97,49 +89,42 @@ void plotProfile(const ForwardProfileArguments& args, const std::string& specime
       "relative transmitted intensity per sr",
       false,
       {model, diffuse}};
-  plotPanels(args.plot, title, {panel}, 1, 1000, 650);
+  plotPanels(args.study.plot, title, {panel}, 1, 1000, 650);
 }
 
 void runForwardProfile(const ForwardProfileArguments& args) {
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
-               {inputFile("--specimen", args.specimen.specimen)});
-  const ThreadLimit threadLimit(args.threads);
-  const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
-  const auto spectra = skin::SpectralDatabase::load(spectraDir());
-  const skin::SkinOptics optics = skin::computeSkinOptics(specimen, spectra, args.wavelengthNm);
-  skin::WalkRunOptions run;
-  run.incidenceDeg = 0;
-  run.rays = args.rays;
-  run.seed = args.seed;
+  const WalkStudy study(args.study);
+  const skin::Specimen& specimen = study.specimen();
+  const skin::SkinOptics optics = study.optics(args.wavelengthNm);
+  skin::WalkRunOptions run = study.run(0);
   run.walk.deepestLayer = skin::Layer::StratumBasale;
   run.walk.belowRefractiveIndex = belowRefractiveIndex(args.belowIndex, optics);
   run.tally.polarBins = args.polarBins;
   run.tally.azimuthBins = 1;  // azimuthally averaged
-  const skin::SkinTally tally = simulateWithEstimator(args.estimator, {optics}, run).front();
+  const skin::SkinTally tally = simulateWithEstimator(args.study.estimator, {optics}, run).front();
   const skin::TransmissionProfile profile = skin::transmissionProfile(tally);
-  writeTextAtomically(args.out, formatCsv(profile));
+  writeTextAtomically(args.study.out, formatCsv(profile));
   std::printf("%s epidermis at %g nm, below n = %.4f: T = %.5f ± %.5f, R = %.5f, absorbed %.5f\n",
               specimen.name.c_str(), args.wavelengthNm, run.walk.belowRefractiveIndex,
               profile.transmittance.mean, profile.transmittance.standardError,
               tally.reflectance().mean, tally.absorptance().mean);
-  if (!args.plot.empty()) plotProfile(args, specimen.name, run.walk.belowRefractiveIndex, profile);
+  if (!args.study.plot.empty())
+    plotProfile(args, specimen.name, run.walk.belowRefractiveIndex, profile);
 }
 
 }  // namespace
 
 void registerForwardProfileCommand(CLI::App& app) {
   auto args = std::make_shared<ForwardProfileArguments>();
-  args->specimen.specimen = "S2";  // the paper's Fig. 8 specimen
+  args->study.specimen.specimen = "S2";  // the paper's Fig. 8 specimen
+  args->study.rays = 1000000;
   CLI::App* command = app.add_subcommand("forward-profile",
                                          "Angular profile of light transmitted through the "
                                          "epidermis at normal incidence (paper Fig. 8)");
-  addSpecimenOptions(*command, args->specimen);
+  addWalkStudyOptions(*command, args->study, "Rays");
   command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
       ->check(finiteRange(0, 1e6))
       ->capture_default_str();
-  addEstimatorOption(*command, args->estimator);
-  addRaysOption(*command, args->rays, "Rays");
-  addSeedOption(*command, args->seed);
   command
       ->add_option("--polar-bins", args->polarBins,
                    "Bins of the angle from the inward normal over [0°, 90°]")
@@ -150,9 +135,8 @@ void registerForwardProfileCommand(CLI::App& app) {
           "--below-index", args->belowIndex,
           "Medium under the stratum basale: 'matched' (its own index) or a refractive index ≥ 1")
       ->capture_default_str();
-  command->add_option("--out", args->out, "CSV file to write, one row per polar bin")->required();
-  command->add_option("--plot", args->plot, "PNG plot to write");
-  addThreadsOption(*command, args->threads);
+  addStudyOutputOptions(*command, args->study, "CSV file to write, one row per polar bin",
+                        "PNG plot to write");
   command->callback([args] { runForwardProfile(*args); });
 }
 

@@ -11,10 +11,8 @@
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
 #include "app/option_checks.h"
-#include "app/specimen_options.h"
-#include "renderer/scene/data_paths.h"
+#include "app/walk_study.h"
 #include "skin/core/atomic_file.h"
-#include "skin/core/thread_limit.h"
 #include "skin/exit_distribution.h"
 #include "skin/skin_simulation.h"
 
@@ -26,17 +24,11 @@ constexpr double kMinMaxRadiusCm = 1e-4;
 constexpr double kMaxMaxRadiusCm = 100;
 
 struct RadialProfileArguments {
-  SpecimenOptions specimen;
+  WalkStudyOptions study;
   double wavelengthNm = 550;
   double angleDeg = 0;
-  std::uint64_t rays = 1000000;
-  std::uint64_t seed = 1;
   double maxRadiusCm = 0.5;
   std::size_t bins = 100;
-  std::string out;
-  std::string plot;
-  int threads = 0;
-  skin::Estimator estimator = skin::Estimator::Spectral;
 };
 
 std::string formatCsv(const skin::RadialProfile& p) {
@@ -68,57 +60,47 @@ void plotProfile(const RadialProfileArguments& args, const std::string& specimen
   std::snprintf(title, sizeof title,
                 "HyLIoS %s, %g nm, incidence %g°, %llu rays: R_d = %.4f ± %.4f (%.4f beyond %g cm)",
                 specimenName.c_str(), args.wavelengthNm, args.angleDeg,
-                static_cast<unsigned long long>(args.rays), p.subsurfaceReflectance.mean,
+                static_cast<unsigned long long>(args.study.rays), p.subsurfaceReflectance.mean,
                 p.subsurfaceReflectance.standardError, p.beyondMaxRadius.mean, args.maxRadiusCm);
   PlotPanel panel{"subsurface reflectance per unit area around the entry point",
                   "distance from the entry point r (cm)",
                   "R(r) (cm^{-2})",
                   true,
                   {profile}};
-  plotPanels(args.plot, title, {panel}, 1, 1000, 650);
+  plotPanels(args.study.plot, title, {panel}, 1, 1000, 650);
 }
 
 void runRadialProfile(const RadialProfileArguments& args) {
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
-               {inputFile("--specimen", args.specimen.specimen)});
-  const ThreadLimit threadLimit(args.threads);
-  const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
-  const auto spectra = skin::SpectralDatabase::load(spectraDir());
-  const skin::SkinOptics optics = skin::computeSkinOptics(specimen, spectra, args.wavelengthNm);
-  skin::WalkRunOptions run;
-  run.incidenceDeg = args.angleDeg;
-  run.rays = args.rays;
-  run.seed = args.seed;
+  const WalkStudy study(args.study);
+  const skin::Specimen& specimen = study.specimen();
+  const skin::SkinOptics optics = study.optics(args.wavelengthNm);
+  skin::WalkRunOptions run = study.run(args.angleDeg);
   run.tally.radialBins = args.bins;
   run.tally.maxRadiusCm = args.maxRadiusCm;
   const skin::RadialProfile profile =
-      skin::radialProfile(simulateWithEstimator(args.estimator, {optics}, run).front());
-  writeTextAtomically(args.out, formatCsv(profile));
+      skin::radialProfile(simulateWithEstimator(args.study.estimator, {optics}, run).front());
+  writeTextAtomically(args.study.out, formatCsv(profile));
   std::printf("%s at %g nm, incidence %g°: R_d = %.5f ± %.5f, of which %.5f ± %.5f beyond %g cm\n",
               specimen.name.c_str(), args.wavelengthNm, args.angleDeg,
               profile.subsurfaceReflectance.mean, profile.subsurfaceReflectance.standardError,
               profile.beyondMaxRadius.mean, profile.beyondMaxRadius.standardError,
               args.maxRadiusCm);
-  if (!args.plot.empty()) plotProfile(args, specimen.name, profile);
+  if (!args.study.plot.empty()) plotProfile(args, specimen.name, profile);
 }
 
 }  // namespace
 
 void registerRadialProfileCommand(CLI::App& app) {
   auto args = std::make_shared<RadialProfileArguments>();
+  args->study.rays = 1000000;
   CLI::App* command = app.add_subcommand("radial-profile",
                                          "Subsurface reflectance per unit area vs distance from "
                                          "the entry point, R(r) in cm⁻² (BSSRDF)");
-  addSpecimenOptions(*command, args->specimen);
+  addWalkStudyOptions(*command, args->study, "Rays");
   command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
       ->check(finiteRange(0, 1e6))
       ->capture_default_str();
-  command->add_option("--angle", args->angleDeg, "Incidence angle from the normal, degrees [0, 90)")
-      ->check(finiteRange(0.0, 89.999))
-      ->capture_default_str();
-  addEstimatorOption(*command, args->estimator);
-  addRaysOption(*command, args->rays, "Rays");
-  addSeedOption(*command, args->seed);
+  addAngleOption(*command, args->angleDeg);
   command
       ->add_option("--max-radius-cm", args->maxRadiusCm,
                    "Outer radius of the last annulus, cm, in [1e-4, 100] (1 µm to 1 m)")
@@ -127,9 +109,8 @@ void registerRadialProfileCommand(CLI::App& app) {
   command->add_option("--bins", args->bins, "Annuli of equal width over [0, max radius)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))
       ->capture_default_str();
-  command->add_option("--out", args->out, "CSV file to write, one row per annulus")->required();
-  command->add_option("--plot", args->plot, "PNG plot (log R) to write");
-  addThreadsOption(*command, args->threads);
+  addStudyOutputOptions(*command, args->study, "CSV file to write, one row per annulus",
+                        "PNG plot (log R) to write");
   command->callback([args] { runRadialProfile(*args); });
 }
 
