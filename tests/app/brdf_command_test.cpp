@@ -4,16 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "app/commands.h"
-#include "app/estimator_option.h"
-#include "renderer/scene/data_paths.h"
 #include "skin/core/constants.h"
-#include "skin/skin_simulation.h"
-#include "skin/specimen.h"
+#include "tests/support/command_reference.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/scratch_csv.h"
 
 using hylios::kPi;
@@ -23,26 +19,18 @@ namespace {
 
 using test::columnOf;
 using test::readCsv;
-using test::ScratchFolder;
 
 void runBrdf(const std::string& arguments) {
   test::runCommandLine(registerBrdfCommand, "brdf " + arguments);
 }
 
-std::string contents(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
-  ScratchFolder scratch("brdf-test");
-  const auto csv = scratch.path / "brdf.csv";
-  const auto png = scratch.path / "brdf.png";
+  const test::ScratchOutputs outputs("brdf-test");
   runBrdf(
       "--specimen S1 --angle 45 --wavelengths 550 --rays 3000 --seed 5 --polar-bins 6 "
-      "--azimuth-bins 4 --out " +
-      csv.string() + " --plot " + png.string());
-  const auto rows = readCsv(csv);
+      "--azimuth-bins 4" +
+      outputs.options());
+  const auto rows = readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 6 * 4);
   const auto& header = rows[0];
   ASSERT_EQ(header.size(), 17u);
@@ -63,36 +51,31 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
   }
   EXPECT_NEAR(solidAngle, 2 * kPi, 1e-4);  // printed with 6 significant digits
   // The same walk through the library: the default spectral estimator (same seed, same stream).
-  const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
-  const auto spectra = skin::SpectralDatabase::load(spectraDir());
   skin::WalkRunOptions run;
   run.incidenceDeg = 45;
   run.rays = 3000;
   run.seed = 5;
-  const skin::SkinTally tally =
-      simulateWithEstimator(skin::Estimator::Spectral,
-                            {skin::computeSkinOptics(specimen, spectra, 550)}, run)
-          .front();
+  const skin::SkinTally tally = test::spectralTally(test::specimenOptics("S1", 550), run);
   EXPECT_NEAR(reflectance, tally.reflectance().mean, 1e-5);
   EXPECT_NEAR(surfaceReflectance, tally.surfaceReflectance().mean, 1e-5);
-  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+  EXPECT_GT(std::filesystem::file_size(outputs.png), 1000u);
 }
 
 TEST(BrdfCommand, SameOutputAtAnyThreadCountAndVisibleHasEveryBin) {
-  ScratchFolder scratch("brdf-threads-test");
+  test::ScratchFolder scratch("brdf-threads-test");
   const auto one = scratch.path / "one.csv", two = scratch.path / "two.csv";
   const std::string common =
       "--wavelengths 400,700 --rays 2000 --polar-bins 3 --azimuth-bins 2 --out ";
   runBrdf(common + one.string() + " --threads 1");
   runBrdf(common + two.string() + " --threads 2");
-  EXPECT_EQ(contents(one), contents(two));
+  EXPECT_EQ(test::readBytes(one), test::readBytes(two));
   const auto visible = scratch.path / "visible.csv";
   runBrdf("--visible --rays 100 --polar-bins 2 --azimuth-bins 3 --out " + visible.string());
   EXPECT_EQ(readCsv(visible).size(), 1u + 2 * 3);
 }
 
 TEST(BrdfCommand, BadArgumentsAreClearErrors) {
-  ScratchFolder scratch("brdf-bad-test");
+  test::ScratchFolder scratch("brdf-bad-test");
   const auto csv = scratch.path / "bad.csv";
   test::expectThrowMentioning<std::invalid_argument>(
       [&] { runBrdf("--rays 10 --out " + csv.string()); }, "--visible");

@@ -7,10 +7,7 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/estimator_option.h"
-#include "renderer/scene/data_paths.h"
-#include "skin/skin_simulation.h"
-#include "skin/specimen.h"
+#include "tests/support/command_reference.h"
 #include "tests/support/scratch_csv.h"
 
 namespace hylios {
@@ -18,19 +15,15 @@ namespace {
 
 using test::columnOf;
 using test::readCsv;
-using test::ScratchFolder;
 
 void runProfile(const std::string& arguments) {
   test::runCommandLine(registerForwardProfileCommand, "forward-profile " + arguments);
 }
 
 TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
-  ScratchFolder scratch("forward-profile-test");
-  const auto csv = scratch.path / "fig8.csv";
-  const auto png = scratch.path / "fig8.png";
-  runProfile("--wavelength 400 --rays 4000 --seed 3 --polar-bins 9 --out " + csv.string() +
-             " --plot " + png.string());
-  const auto rows = readCsv(csv);
+  const test::ScratchOutputs outputs("forward-profile-test");
+  runProfile("--wavelength 400 --rays 4000 --seed 3 --polar-bins 9" + outputs.options());
+  const auto rows = readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 9);
   const auto& header = rows[0];
   ASSERT_EQ(header.size(), 7u);
@@ -46,23 +39,20 @@ TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
                    std::stod(rows[r][columnOf(header, "solid_angle_sr")]);
   }
   // The same walk: S2 (the default), epidermis only, bottom index matched to the stratum basale.
-  const skin::Specimen specimen = skin::loadSpecimen("S2", specimenDir());
-  const auto spectra = skin::SpectralDatabase::load(spectraDir());
-  const skin::SkinOptics optics = skin::computeSkinOptics(specimen, spectra, 400);
+  const skin::SkinOptics optics = test::specimenOptics("S2", 400);
   skin::WalkRunOptions run;
   run.rays = 4000;
   run.seed = 3;
   run.walk.deepestLayer = skin::Layer::StratumBasale;
   run.walk.belowRefractiveIndex = optics[skin::Layer::StratumBasale].refractiveIndex;
-  const skin::SkinTally tally =
-      simulateWithEstimator(skin::Estimator::Spectral, {optics}, run).front();
+  const skin::SkinTally tally = test::spectralTally(optics, run);
   EXPECT_NEAR(transmitted, tally.transmittance().mean, 1e-5);
   EXPECT_GT(tally.transmittance().mean, 0.1);  // 400 nm: a thin epidermis lets much through
-  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+  EXPECT_GT(std::filesystem::file_size(outputs.png), 1000u);
 }
 
 TEST(ForwardProfileCommand, BadArgumentsAreClearErrors) {
-  ScratchFolder scratch("forward-profile-bad-test");
+  test::ScratchFolder scratch("forward-profile-bad-test");
   const auto csv = scratch.path / "bad.csv";
   test::expectThrowMentioning<std::invalid_argument>(
       [&] { runProfile("--below-index water --rays 10 --out " + csv.string()); },

@@ -6,11 +6,8 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/estimator_option.h"
-#include "renderer/scene/data_paths.h"
 #include "skin/core/constants.h"
-#include "skin/skin_simulation.h"
-#include "skin/specimen.h"
+#include "tests/support/command_reference.h"
 #include "tests/support/scratch_csv.h"
 
 using hylios::kPi;
@@ -20,20 +17,16 @@ namespace {
 
 using test::columnOf;
 using test::readCsv;
-using test::ScratchFolder;
 
 void runProfile(const std::string& arguments) {
   test::runCommandLine(registerRadialProfileCommand, "radial-profile " + arguments);
 }
 
 TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
-  ScratchFolder scratch("radial-profile-test");
-  const auto csv = scratch.path / "radial.csv";
-  const auto png = scratch.path / "radial.png";
-  runProfile(
-      "--specimen S1 --wavelength 550 --rays 3000 --seed 2 --max-radius-cm 2 --bins 20 --out " +
-      csv.string() + " --plot " + png.string());
-  const auto rows = readCsv(csv);
+  const test::ScratchOutputs outputs("radial-profile-test");
+  runProfile("--specimen S1 --wavelength 550 --rays 3000 --seed 2 --max-radius-cm 2 --bins 20" +
+             outputs.options());
+  const auto rows = readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 20);
   const auto& header = rows[0];
   ASSERT_EQ(header.size(), 7u);
@@ -49,23 +42,18 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
     subsurface +=
         std::stod(rows[r][columnOf(header, "reflectance_per_cm2")]) * std::stod(rows[r][2]);
   }
-  const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
-  const auto spectra = skin::SpectralDatabase::load(spectraDir());
   skin::WalkRunOptions run;
   run.rays = 3000;
   run.seed = 2;
-  const skin::SkinTally tally =
-      simulateWithEstimator(skin::Estimator::Spectral,
-                            {skin::computeSkinOptics(specimen, spectra, 550)}, run)
-          .front();
+  const skin::SkinTally tally = test::spectralTally(test::specimenOptics("S1", 550), run);
   // Exits beyond 2 cm from the entry point are rare but possible: the annuli hold at most R_d.
   EXPECT_LE(subsurface, tally.subsurfaceReflectance().mean + 1e-5);
   EXPECT_GT(subsurface, tally.subsurfaceReflectance().mean - 0.01);
-  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+  EXPECT_GT(std::filesystem::file_size(outputs.png), 1000u);
 }
 
 TEST(RadialProfileCommand, BadArgumentsAreClearErrors) {
-  ScratchFolder scratch("radial-profile-bad-test");
+  test::ScratchFolder scratch("radial-profile-bad-test");
   const auto csv = scratch.path / "bad.csv";
   EXPECT_THROW(runProfile("--bins 0 --out " + csv.string()), CLI::ValidationError);
   EXPECT_THROW(runProfile("--max-radius-cm -1 --out " + csv.string()), CLI::ValidationError);

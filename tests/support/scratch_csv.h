@@ -1,4 +1,5 @@
-// Test support for the command tests: a scratch folder removed afterwards, a CSV reader, a
+// Test support for the command tests: a scratch folder removed afterwards (and one holding a
+// command's CSV and plot), a CSV reader, a
 // runner that parses one command line with a command registered on a fresh CLI11 app, and a check
 // that a command fails with a message naming the problem.
 #pragma once
@@ -26,6 +27,16 @@ struct ScratchFolder {
     std::error_code ignored;
     std::filesystem::remove_all(path, ignored);
   }
+};
+
+/// A command's CSV and PNG outputs in a scratch folder of their own: NAME.csv and NAME.png.
+struct ScratchOutputs {
+  explicit ScratchOutputs(const std::string& name)
+      : folder(name), csv(folder.path / (name + ".csv")), png(folder.path / (name + ".png")) {}
+  /// " --out CSV --plot PNG", to append to a command line.
+  std::string options() const { return " --out " + csv.string() + " --plot " + png.string(); }
+  ScratchFolder folder;
+  std::filesystem::path csv, png;
 };
 
 /// Rows of comma-separated fields (no quoting: the hylios CSVs hold numbers and names only).
