@@ -3,19 +3,16 @@
 # wavelengths), 1e5 rays each, 45° incidence, 2 threads. Prints one "key: value" per line.
 # usage: bench/full-curve.sh [BUILD_DIR] [RAYS] [THREADS]
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${1:-$root/build}"
+source "$(dirname "$0")/common.sh"
 rays="${2:-100000}"
 threads="${3:-2}"
-out="$(mktemp -d)"
-trap 'rm -rf "$out"' EXIT
-HYLIOS_DATA_DIR="$root" /usr/bin/time -v -o "$out/time.txt" "$build/hylios" spectrum --specimen S1 \
-  --angle 45 --wavelengths 250:2500:5 --rays "$rays" --threads "$threads" --out "$out/S1.csv" >/dev/null
-wall=$(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$out/time.txt")
-user=$(sed -n 's/.*User time (seconds): //p' "$out/time.txt")
-system=$(sed -n 's/.*System time (seconds): //p' "$out/time.txt")
-peak=$(sed -n 's/.*Maximum resident set size (kbytes): //p' "$out/time.txt")
-wavelengths=$(($(wc -l < "$out/S1.csv") - 1))
+/usr/bin/time -v -o "$work/time.txt" "$build/hylios" spectrum --specimen S1 \
+  --angle 45 --wavelengths 250:2500:5 --rays "$rays" --threads "$threads" --out "$work/S1.csv" >/dev/null
+wall=$(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$work/time.txt")
+user=$(sed -n 's/.*User time (seconds): //p' "$work/time.txt")
+system=$(sed -n 's/.*System time (seconds): //p' "$work/time.txt")
+peak=$(sed -n 's/.*Maximum resident set size (kbytes): //p' "$work/time.txt")
+wavelengths=$(($(wc -l < "$work/S1.csv") - 1))
 echo "command: hylios spectrum --specimen S1 --angle 45 --wavelengths 250:2500:5 --rays $rays --threads $threads"
 echo "wavelengths: $wavelengths"
 echo "wall_time: $wall"

@@ -7,36 +7,24 @@
 # (for the visible: the worst of the band, R, G, B and chromaticity).
 # usage: bench/render-noise.sh [BUILD_DIR] [OUT_DIR] [RESOLUTION] [SPP] [TARGET]
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${1:-$root/build}"
+source "$(dirname "$0")/common.sh"
 out="${2:-$root/docs/benchmarks}"
 resolution="${3:-256x256}"
 spp="${4:-32}"
 target="${5:-0.05}"
 mkdir -p "$out"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-export HYLIOS_DATA_DIR="$root"
-lambertian() {  # the scene with its skin material replaced by a diffuse one of reflectance $2
-  sed -e 's/^type = "skin"/type = "diffuse"\nreflectance = '"$2"'/' -e '/^specimen = /d' -e '/^freckles = /d' \
-    -e 's|"\.\./assets/|"'"$root"'/assets/|' "$1"
-}
 echo "band,variant,cpu_s,worst_noise,time_to_target_s" > "$work/noise.csv"
 for band in uv365:0.05 visible:0.4 ir1100:0.6; do
   name=${band%%:*}; rho=${band#*:}
-  scene="$root/scenes/figure01_$name.toml"
-  lambertian "$scene" "$rho" > "$work/lambertian_$name.toml"
   for variant in spectral per-wavelength lambertian; do
-    file="$scene"; extra=(--estimator "$variant")
-    [ "$variant" = lambertian ] && { file="$work/lambertian_$name.toml"; extra=(); }
+    figure01_variant "$name" "$rho" "$variant"
     total=0
     for seed in 1 2; do
       /usr/bin/time -f "%U %S" -o "$work/t" "$build/hylios" render "$file" --out "$work/${name}_${variant}_$seed.exr" \
         --resolution "$resolution" --spp "$spp" --seed "$seed" "${extra[@]}" > /dev/null
       total=$(awk -v t="$total" '{print t + $1 + $2}' "$work/t")
     done
-    noise=$("$build/hylios" image-diff --noise "$work/${name}_${variant}_1.exr" "$work/${name}_${variant}_2.exr" |
-      sed -n 's/^[^:]*: \([0-9.]*\) %.*/\1/p' | sort -g | tail -1)
+    noise=$("$build/hylios" image-diff --noise "$work/${name}_${variant}_1.exr" "$work/${name}_${variant}_2.exr" | worst)
     python3 -c "t=$total/2; n=$noise/100; print(f'$name,$variant,{t:.2f},{n:.4f},{t*(n/$target)**2:.1f}')" >> "$work/noise.csv"
     "$build/hylios" image-diff --noise "$work/${name}_${variant}_1.exr" "$work/${name}_${variant}_2.exr" > "$work/${name}_${variant}_noise.txt"
   done

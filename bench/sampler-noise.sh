@@ -8,29 +8,17 @@
 # the CPU time (user + sys, mean of the two seeds).
 # usage: bench/sampler-noise.sh [BUILD_DIR] [OUT_DIR] [RESOLUTION] [SPP_LIST]
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${1:-$root/build}"
+source "$(dirname "$0")/common.sh"
 out="${2:-$root/docs/benchmarks}"
 resolution="${3:-128x128}"
 spps="${4:-16 64}"
 mkdir -p "$out"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-export HYLIOS_DATA_DIR="$root"
-lambertian() {  # the scene with its skin material replaced by a diffuse one of reflectance $2
-  sed -e 's/^type = "skin"/type = "diffuse"\nreflectance = '"$2"'/' -e '/^specimen = /d' -e '/^freckles = /d' \
-    -e 's|"\.\./assets/|"'"$root"'/assets/|' "$1"
-}
-worst() { sed -n 's/^[^:]*: \([0-9.]*\) %.*/\1/p' | sort -g | tail -1; }
 echo "band,variant,sampler,spp,cpu_s,two_seed_noise,film_estimate" > "$work/noise.csv"
 : > "$work/groups.txt"
 for band in uv365:0.05 visible:0.4 ir1100:0.6; do
   name=${band%%:*}; rho=${band#*:}
-  scene="$root/scenes/figure01_$name.toml"
-  lambertian "$scene" "$rho" > "$work/lambertian_$name.toml"
   for variant in spectral per-wavelength lambertian; do
-    file="$scene"; extra=(--estimator "$variant")
-    [ "$variant" = lambertian ] && { file="$work/lambertian_$name.toml"; extra=(); }
+    figure01_variant "$name" "$rho" "$variant"
     for spp in $spps; do
       for sampler in independent sobol; do
         total=0

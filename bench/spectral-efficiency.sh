@@ -8,19 +8,15 @@
 # Writes OUT/spectral-efficiency.csv, OUT/spectral-efficiency.png and OUT/spectral-efficiency.md.
 # usage: bench/spectral-efficiency.sh [BUILD_DIR] [OUT_DIR] [RAYS] [STEP]
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${1:-$root/build}"
+source "$(dirname "$0")/common.sh"
 out="${2:-$root/docs/benchmarks}"
 rays="${3:-100000}"
 step="${4:-50}"
 mkdir -p "$out"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
 cpu() {  # CPU seconds (user + system) and wall seconds of a command, as "cpu wall"
   /usr/bin/time -f "%U %S %e" -o "$work/t" "$@" >/dev/null
   awk '{printf "%.3f %.3f\n", $1 + $2, $3}' "$work/t"
 }
-export HYLIOS_DATA_DIR="$root"
 read -r sp_cpu sp_wall < <(cpu "$build/hylios" spectrum --specimen S1 --angle 45 --wavelengths 250:2500:5 \
   --rays "$rays" --threads 2 --out "$work/spectral.csv")
 # The fixed cost of a process (loading the spectral data, specimen, optics): subtracted from each
