@@ -17,6 +17,7 @@
 #include "app/option_checks.h"
 #include "app/progress_bar.h"
 #include "app/specimen_options.h"
+#include "app/spectral_table_spectrum.h"
 #include "app/spectrum_wavelength.h"
 #include "app/wavelength_list.h"
 #include "renderer/scene/data_paths.h"
@@ -143,6 +144,10 @@ void runSpectrum(const SpectrumArguments& args) {
     // One path per bundle of wavelengths, the full model (no effect plan: bound 0).
     tallies = skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
     progress.advance(wavelengths.size());
+  } else if (args.estimator == skin::Estimator::Spectral) {
+    // Table mode: each bundle's tables from one set of spectral walks (full model).
+    tallies = spectralTableTallies(optics, args.angleDeg, args.rays, args.seed);
+    progress.advance(wavelengths.size());
   } else {
     const SpectrumWavelengthSettings settings{args.angleDeg,        args.rays,    args.seed,
                                               args.effectTolerance, args.explain, args.skinModel};
@@ -193,9 +198,9 @@ void registerSpectrumCommand(CLI::App& app) {
   command
       ->add_option(
           "--epsilon", args->effectTolerance,
-          "Effect-planner tolerance (per-wavelength estimator and table mode): processes whose "
-          "summed "
-          "optical depth stays below it are skipped, bounding the change of R by it (0 = simulate "
+          "Effect-planner tolerance (per-wavelength estimator, walk or table mode): processes "
+          "whose summed optical depth stays below it are skipped, bounding the change of R by it "
+          "(0 = simulate "
           "everything; default 1e-3)")
       ->check(finiteRange(0.0, 1.0));
   command->add_flag(

@@ -1,6 +1,8 @@
 // Tabulated exit statistics of the HyLIoS walk (issue 5, the `table` skin mode): for one
 // (SkinOptics, WalkOptions) the walk's outcome is tabulated once and then sampled at the cost of a
-// few table look-ups instead of a whole random walk.
+// few table look-ups instead of a whole random walk. A table is built either from analog walks of
+// its own wavelength (build) or, for every wavelength of a bundle at once, from one set of spectral
+// walks (buildBundle, skin/spectral_walk.h; issue 11).
 //
 // What is exact and what is tabulated. A ray from air first meets the rough surface; that step
 // (SkinWalk::enterFromAir) is simulated exactly, so surface reflection (probability and direction)
@@ -10,9 +12,13 @@
 // cosines μ_k = (k + 1)/K (the last at normal transmission, where most rays go); bin k is filled
 // from N walks SkinWalk::traceEntered((√(1−μ_k²), 0, μ_k)), and a ray with μ_t between two centres
 // uses the lower or upper bin with the linear-interpolation probabilities (one uniform number; μ_t
-// < 1/K uses bin 0). Each bin keeps:
-//   * outcome counts: subsurface exit, transmitted (truncated stacks), event limit, and absorbed by
-//     layer, in a melanosome or not;
+// < 1/K uses bin 0). Each bin keeps, as weights (an analog walk's path weighs 1 in its outcome; a
+// spectral path weighs its exit weight at λ in its exit outcome and its absorbed weight per layer
+// in the absorption outcomes, the weights of skin/spectral_walk.h, exact in expectation):
+//   * outcome weights: subsurface exit, transmitted (truncated stacks), event limit, and absorbed
+//     by layer, in a melanosome or not; an outcome is drawn with probability its weight over the
+//     bin's total weight (for analog walks exactly the counted frequency; for spectral walks a
+//     ratio estimate, whose O(1/N) bias is far below the table's noise);
 //   * subsurface exits: a joint histogram of exit radius r (R log-spaced bins between kMinRadiusCm
 //     and kMaxRadiusCm, within a bin log-uniform; plus [0, kMinRadiusCm) uniform in area and an
 //     overflow [kMaxRadiusCm, largest radius seen) uniform) × offset azimuth |φ − φ_t| ∈ [0, π]
@@ -21,18 +27,22 @@
 //     uniform within a bin; the exit azimuth is drawn uniformly (the renderer uses its own exit
 //     lobe, skin_material.h, and hemispherical spectra do not need it);
 //   * transmitted direction: P polar bins the same way (from +z); its lateral offset is not kept;
-//   * exact sums for the hemispherical quantities with standard errors (BinStatistics).
+//   * sums and sums of squares for the hemispherical quantities, with standard errors
+//     (BinStatistics: weight / N per outcome, exact in expectation).
 // SkinPath::events of a sampled path counts the entry crossing only.
 //
 // Building: bins × rays walks, ray i of bin k on Rng(seed, k, i), in fixed chunks run in parallel
 // (TBB) and merged in chunk order: the table is the same at any thread count. With
 // ExitTableSettings::tabulatedMelanosomes the build walks use WalkOptions::tabulatedMelanosomes.
+// A bundle's build makes the same walks once for all its wavelengths (spectral paths with
+// per-layer absorption), and the bundle (skin/spectral_bundle.h) must be able to share paths.
 //
-// File format (little-endian): "HYLXTAB1" | u64 format version | u64 key | u64 payload size |
-// u64 FNV-1a 64 of the payload | payload (u64 and IEEE-754 doubles). The key (ExitTable::key)
-// hashes every input: all SkinOptics and WalkOptions fields, all settings and the format version.
-// read() returns nullopt, never throws or crashes, for a missing, truncated, corrupt, stale or
-// foreign file; write() is atomic (a temporary file renamed into place).
+// File format (little-endian; skin/exit_table_file.cpp): "HYLXTAB1" | u64 format version | u64 key
+// | u64 payload size | u64 FNV-1a 64 of the payload | payload (u64 and IEEE-754 doubles). The key
+// hashes every input: all SkinOptics and WalkOptions fields (of every member, for a bundle's
+// table, with the member's place), all settings and the format version. read() returns nullopt,
+// never throws or crashes, for a missing, truncated, corrupt, stale or foreign file; write() is
+// atomic (a temporary file renamed into place).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -47,11 +57,12 @@
 #include "skin/layer.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_walk.h"
+#include "skin/spectral_walk.h"
 
 namespace hylios::skin {
 
 /// Bump when the file layout or the walk's physics changes (stale tables are then rebuilt).
-inline constexpr std::uint64_t kExitTableFormatVersion = 2;
+inline constexpr std::uint64_t kExitTableFormatVersion = 3;
 
 struct ExitTableSettings {
   int cosineBins = 12;               ///< K, bins of the transmitted direction's cosine
@@ -83,14 +94,28 @@ class ExitTable {
   /// The key of the table for these inputs (FNV-1a 64 of every field, skin/core/content_hash.h).
   static std::uint64_t key(const SkinOptics& optics, const WalkOptions& walk,
                            const ExitTableSettings& settings);
+  /// The key of member `member` of a bundle's tables (buildBundle).
+  static std::uint64_t bundleKey(const std::vector<const SkinWalk*>& bundle, std::size_t member,
+                                 const ExitTableSettings& settings);
   /// Runs the walks. Throws std::invalid_argument for settings out of range (bins < 1 or above
   /// 4096, raysPerBin < 2 or above 2^32) and whatever SkinWalk's constructor throws.
   static ExitTable build(const SkinWalk& walk, const ExitTableSettings& settings);
+  /// One table per walk of `bundle` (same order) from one set of spectral walks. The walks must
+  /// share their WalkOptions and be able to share paths (SpectralWalk's constructor throws
+  /// std::invalid_argument otherwise), as well as the settings' checks of build().
+  static std::vector<ExitTable> buildBundle(const std::vector<const SkinWalk*>& bundle,
+                                            const ExitTableSettings& settings);
   /// The table stored at `path` if it exists, is intact and was built for exactly these inputs;
   /// otherwise nullopt with the reason in *whyNot (when not null).
   static std::optional<ExitTable> read(const std::filesystem::path& path, const SkinWalk& walk,
                                        const ExitTableSettings& settings,
                                        std::string* whyNot = nullptr);
+  /// The same for member `member` of a bundle's tables.
+  static std::optional<ExitTable> readBundleMember(const std::filesystem::path& path,
+                                                   const std::vector<const SkinWalk*>& bundle,
+                                                   std::size_t member,
+                                                   const ExitTableSettings& settings,
+                                                   std::string* whyNot = nullptr);
   /// Writes the table atomically. Throws std::runtime_error when the file cannot be written.
   void write(const std::filesystem::path& path) const;
 
@@ -101,6 +126,8 @@ class ExitTable {
   SkinPath sampleEntered(const Vec3& transmitted, Rng& rng) const;
 
   std::uint64_t key() const { return key_; }
+  /// How many wavelengths shared the build's walks (1: analog walks of this table's own).
+  std::size_t bundleSize() const { return bundleSize_; }
   const ExitTableSettings& settings() const { return settings_; }
   const SkinWalk& walk() const { return walk_; }
   int bins() const { return settings_.cosineBins; }
@@ -120,31 +147,44 @@ class ExitTable {
 
  private:
   struct Bin {
-    std::uint64_t rays = 0, subsurface = 0, transmitted = 0, eventLimited = 0;
-    std::array<std::uint64_t, kLayerCount> absorbed{}, absorbedInMelanosome{};
-    std::vector<std::uint64_t> offsetCounts;            ///< (R + 2) × A, radial-major
-    std::vector<std::uint64_t> exitPolarCounts;         ///< P
-    std::vector<std::uint64_t> transmittedPolarCounts;  ///< P
+    std::uint64_t rays = 0;
+    // Weights per outcome (analog walks: counts) and sums of the squared path weights.
+    double subsurface = 0, transmitted = 0, eventLimited = 0;
+    std::array<double, kLayerCount> absorbed{}, absorbedInMelanosome{};
+    double subsurfaceSquares = 0, transmittedSquares = 0, eventLimitedSquares = 0;
+    double absorbedSquares = 0;  ///< of a path's total absorbed weight
+    std::array<double, kLayerCount> absorbedSquaresByLayer{};
+    std::vector<double> offsetWeights;            ///< (R + 2) × A, radial-major
+    std::vector<double> exitPolarWeights;         ///< P
+    std::vector<double> transmittedPolarWeights;  ///< P
     double largestRadiusCm = 0;
-    double radiusSumCm = 0, radiusSquaresSumCm2 = 0;
-    // Sampling tables (derived, not stored): cumulative counts.
-    std::vector<std::uint64_t> outcomeCdf, offsetCdf, exitPolarCdf, transmittedPolarCdf;
+    double radiusSumCm = 0, radiusSquaresSumCm2 = 0;  ///< weighted by the exit weight
+    // Sampling tables (derived, not stored): cumulative weights.
+    std::vector<double> outcomeCdf, offsetCdf, exitPolarCdf, transmittedPolarCdf;
     void merge(const Bin& other);
+    void addSubsurface(double weight, double radiusCm, std::size_t cell, std::size_t exitPolar);
+    void addTransmitted(double weight, std::size_t polar);
   };
 
-  ExitTable(const SkinWalk& walk, const ExitTableSettings& settings);
+  ExitTable(const SkinWalk& walk, const ExitTableSettings& settings, std::uint64_t key,
+            std::size_t bundleSize);
   Bin& newBin();
-  Bin emptyBin() const;  ///< zero counts, sized by the settings
+  Bin emptyBin() const;  ///< zero weights, sized by the settings
   void prepareSampling();
   std::string serializePayload() const;
   bool parsePayload(const std::string& payload, std::string* whyNot);
+  static std::optional<ExitTable> readWithKey(const std::filesystem::path& path, ExitTable table,
+                                              std::string* whyNot);
   void tally(Bin& bin, const SkinPath& path) const;
+  void tally(Bin& bin, const SpectralPath& path, std::size_t member) const;
+  std::size_t offsetCell(double offsetXCm, double offsetYCm) const;
   int radialCell(double radiusCm) const;
   SkinPath sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng) const;
 
   SkinWalk walk_;
   ExitTableSettings settings_;
   std::uint64_t key_ = 0;
+  std::size_t bundleSize_ = 1;
   std::vector<Bin> bins_;
 };
 

@@ -28,7 +28,8 @@ void recordPath(const SpectralPath& path, std::vector<SkinTally*>& tallies) {
     score.absorbed = path.absorbedTotal[i];
     if (!path.absorbed.empty()) {
       score.absorbedByLayer = path.absorbed[i];
-      score.absorbedInMelanosomes = path.absorbedInMelanosomes[i];
+      score.absorbedInMelanosomes = 0;
+      for (double inLayer : path.absorbedInMelanosomes[i]) score.absorbedInMelanosomes += inLayer;
     }
     if (perWavelengthDirection) score.exitDirection = path.transmittedDirection[i];
     tallies[i]->record(score);

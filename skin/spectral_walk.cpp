@@ -50,7 +50,7 @@ class SpectralWalk::State {
     path.exitWeight.assign(n, 0.0);
     path.absorbedTotal.assign(n, 0.0);
     path.absorbed.assign(layers ? n : 0, {});
-    path.absorbedInMelanosomes.assign(layers ? n : 0, 0.0);
+    path.absorbedInMelanosomes.assign(layers ? n : 0, {});
     path.transmittedDirection.clear();
     path.surfaceWeight.clear();
     stays.clear();
@@ -182,21 +182,33 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
   }
 }
 
+std::size_t SpectralWalk::drawHero(Rng& rng) const {
+  if (wavelengthCount_ == 1) return 0;
+  return std::min(wavelengthCount_ - 1,
+                  static_cast<std::size_t>(rng.uniform() * static_cast<double>(wavelengthCount_)));
+}
+
 void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
                          bool splitEntryReflection) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);
   path.events = 1;
   path.exitOffsetXCm = path.exitOffsetYCm = 0;
-  s.hero = wavelengthCount_ == 1
-               ? 0
-               : std::min(wavelengthCount_ - 1,
-                          static_cast<std::size_t>(rng.uniform() *
-                                                   static_cast<double>(wavelengthCount_)));
+  s.hero = drawHero(rng);
   s.direction = incidentDirection;
   if (crossSurface(s, false, rng, splitEntryReflection)) return traceEntered(s, rng);
   path.end = PathEnd::SurfaceReflection;
   path.exitDirection = s.direction;
   s.misRatios(path.exitWeight);
+}
+
+void SpectralWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng,
+                                SpectralPath& path) const {
+  State s(path, wavelengthCount_, options_.layerAbsorption);
+  path.events = 1;
+  path.exitOffsetXCm = path.exitOffsetYCm = 0;
+  s.hero = drawHero(rng);
+  s.direction = transmittedDirection;
+  traceEntered(s, rng);
 }
 
 void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
@@ -388,8 +400,10 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
         depth += stayDepth;
         const double after = std::exp(-depth);
         const double lost = stay.roulette * (before - after) * ratio[i];
-        path.absorbed[i][index(slabs_[stay.slab].layer)] += lost;
-        if (stayDepth > 0) path.absorbedInMelanosomes[i] += lost * (melaninDepth / stayDepth);
+        const std::size_t layer = index(slabs_[stay.slab].layer);
+        path.absorbed[i][layer] += lost;
+        if (stayDepth > 0)
+          path.absorbedInMelanosomes[i][layer] += lost * (melaninDepth / stayDepth);
         before = after;
       }
     } else {

@@ -68,8 +68,9 @@ struct SpectralPath {
   /// Per λ and layer (WalkOptions::layerAbsorption): weight absorbed on the way, booked per stay
   /// in a layer (layers' absorbers and melanosomes together; empty otherwise).
   std::vector<std::array<double, kLayerCount>> absorbed;
-  /// Per λ: the part of `absorbed` taken by melanin inside melanosomes (share by optical depth).
-  std::vector<double> absorbedInMelanosomes;
+  /// Per λ and layer: the part of `absorbed` taken by melanin inside melanosomes (each stay's loss
+  /// shared by optical depth).
+  std::vector<std::array<double, kLayerCount>> absorbedInMelanosomes;
 
   /// The walk's workspace (kept to avoid allocations per path).
   struct Stay {
@@ -108,6 +109,9 @@ class SpectralWalk {
   /// The same with the entry split (WalkOptions::splitEntryReflection) chosen per call.
   void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
              bool splitEntryReflection) const;
+  /// A path that has just crossed into the skin along `transmittedDirection` (unit, z > 0), the
+  /// same for every wavelength (like SkinWalk::traceEntered; exit tables are built from these).
+  void traceEntered(const Vec3& transmittedDirection, Rng& rng, SpectralPath& path) const;
 
  private:
   struct Slab {
@@ -132,6 +136,8 @@ class SpectralWalk {
   class State;
 
   void traceEntered(State& s, Rng& rng) const;
+  /// The hero: uniform over the bundle.
+  std::size_t drawHero(Rng& rng) const;
   /// The rough (or smooth) surface crossing of Sec. 4.3 from air (fromInside false) or from the
   /// skin; returns whether the ray ended on the far side, updating s.direction and densities.
   bool crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry = false) const;

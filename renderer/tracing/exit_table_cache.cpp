@@ -2,6 +2,7 @@
 
 #include <sys/file.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <fcntl.h>
@@ -87,54 +88,95 @@ bool ExitTableCache::folderUsable() {
 std::shared_ptr<const skin::ExitTable> ExitTableCache::get(
     const skin::SkinWalk& walk, const skin::ExitTableSettings& settings) {
   const std::uint64_t key = skin::ExitTable::key(walk.optics(), walk.options(), settings);
-  {
+  return obtain(
+      {key},
+      [&](std::size_t, const std::filesystem::path& file) {
+        return skin::ExitTable::read(file, walk, settings);
+      },
+      [&] { return std::vector<skin::ExitTable>{skin::ExitTable::build(walk, settings)}; })[0];
+}
+
+std::vector<std::shared_ptr<const skin::ExitTable>> ExitTableCache::getBundle(
+    const std::vector<const skin::SkinWalk*>& bundle, const skin::ExitTableSettings& settings) {
+  std::vector<std::uint64_t> keys;
+  for (std::size_t m = 0; m < bundle.size(); ++m)
+    keys.push_back(skin::ExitTable::bundleKey(bundle, m, settings));
+  return obtain(
+      keys,
+      [&](std::size_t member, const std::filesystem::path& file) {
+        return skin::ExitTable::readBundleMember(file, bundle, member, settings);
+      },
+      [&] { return skin::ExitTable::buildBundle(bundle, settings); });
+}
+
+std::vector<std::shared_ptr<const skin::ExitTable>> ExitTableCache::obtain(
+    const std::vector<std::uint64_t>& keys, const ReadMember& read, const BuildAll& build) {
+  std::vector<std::shared_ptr<const skin::ExitTable>> tables(keys.size());
+  auto fromMemory = [&] {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (auto found = tables_.find(key); found != tables_.end()) return found->second;
-  }
-  std::shared_ptr<const skin::ExitTable> table;
+    for (std::size_t m = 0; m < keys.size(); ++m)
+      if (auto found = tables_.find(keys[m]); found != tables_.end()) tables[m] = found->second;
+    return std::all_of(tables.begin(), tables.end(), [](const auto& t) { return t != nullptr; });
+  };
+  if (fromMemory()) return tables;
   const bool onDisk = folderUsable();
-  // One builder per table across processes: the first request of a key in this process takes
-  // the file lock (waiting for another process that builds it). A second request of the same key
-  // in this process does not wait (it may run nested on the first one's own thread, inside the
-  // build's parallel loop, and would deadlock) but builds the table itself, as before.
+  // One builder per table (or bundle: its first key) across processes: the first request of a key
+  // in this process takes the file lock (waiting for another process that builds it). A second
+  // request of the same key in this process does not wait (it may run nested on the first one's
+  // own thread, inside the build's parallel loop, and would deadlock) but builds the table itself.
   std::optional<FileLock> claim;
   bool claimedHere = false;
+  bool complete = false;
   if (onDisk) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      claimedHere = claimed_.insert(key).second;
+      claimedHere = claimed_.insert(keys[0]).second;
     }
-    std::filesystem::path lockFile = fileFor(key);
+    std::filesystem::path lockFile = fileFor(keys[0]);
     lockFile += ".lock";
     if (claimedHere) claim.emplace(lockFile);
-    const std::filesystem::path file = fileFor(key);
-    std::error_code error;
-    if (std::filesystem::exists(file, error)) {
-      if (auto read = skin::ExitTable::read(file, walk, settings)) {
-        table = std::make_shared<const skin::ExitTable>(std::move(*read));
+    complete = true;
+    for (std::size_t m = 0; m < keys.size(); ++m) {
+      if (tables[m]) continue;
+      const std::filesystem::path file = fileFor(keys[m]);
+      std::error_code error;
+      std::optional<skin::ExitTable> found;
+      if (std::filesystem::exists(file, error)) {
+        found = read(m, file);
+        if (!found) ++rejected_;
+      }
+      if (found) {
+        tables[m] = std::make_shared<const skin::ExitTable>(std::move(*found));
         ++loaded_;
       } else {
-        ++rejected_;
+        complete = false;
       }
     }
   }
-  if (!table) {
+  if (!complete) {
     const BuildInProgress building;
-    table = std::make_shared<const skin::ExitTable>(skin::ExitTable::build(walk, settings));
-    ++built_;
-    if (onDisk) {
-      try {
-        table->write(fileFor(key));
-      } catch (const std::exception& e) {
-        std::call_once(warned_, [&] {
-          std::cerr << "warning: " << e.what() << "; exit tables are kept in memory only\n";
-        });
-      }
+    std::vector<skin::ExitTable> built = build();
+    for (std::size_t m = 0; m < keys.size(); ++m) {
+      tables[m] = std::make_shared<const skin::ExitTable>(std::move(built[m]));
+      ++built_;
+      if (onDisk) writeQuietly(*tables[m], fileFor(keys[m]));
     }
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  if (claimedHere) claimed_.erase(key);
-  return tables_.emplace(key, table).first->second;
+  if (claimedHere) claimed_.erase(keys[0]);
+  for (std::size_t m = 0; m < keys.size(); ++m)
+    tables[m] = tables_.emplace(keys[m], tables[m]).first->second;
+  return tables;
+}
+
+void ExitTableCache::writeQuietly(const skin::ExitTable& table, const std::filesystem::path& file) {
+  try {
+    table.write(file);
+  } catch (const std::exception& e) {
+    std::call_once(warned_, [&] {
+      std::cerr << "warning: " << e.what() << "; exit tables are kept in memory only\n";
+    });
+  }
 }
 
 }  // namespace hylios

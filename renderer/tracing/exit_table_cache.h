@@ -6,6 +6,9 @@
 // it (magic, version, key, size, checksum, consistent counts) and otherwise builds the table and
 // writes it atomically, so a truncated, corrupt, stale or foreign file is rebuilt. When the folder
 // cannot be created or written, tables are built in memory and one warning is printed.
+// A bundle's tables (ExitTable::buildBundle, built together from spectral walks) are one file per
+// member; getBundle loads them when every member is intact and otherwise builds the bundle again,
+// its lock taken on the first member's file.
 // Thread-safe: tables for different keys are built in parallel; tables already obtained are
 // kept in memory for the life of the cache object. Across processes (and cache objects) a table
 // is built once: its builder holds an exclusive lock (flock) on "<table file>.lock" while it looks
@@ -14,11 +17,14 @@
 #include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "skin/exit_table.h"
 #include "skin/skin_walk.h"
@@ -39,6 +45,10 @@ class ExitTableCache {
   /// The table of `walk` with `settings`: from memory, from disk, or built (and written).
   std::shared_ptr<const skin::ExitTable> get(const skin::SkinWalk& walk,
                                              const skin::ExitTableSettings& settings);
+  /// The tables of a bundle's walks built from one set of spectral walks (ExitTable::buildBundle),
+  /// in the bundle's order: from memory or disk when every member is there, otherwise all built.
+  std::vector<std::shared_ptr<const skin::ExitTable>> getBundle(
+      const std::vector<const skin::SkinWalk*>& bundle, const skin::ExitTableSettings& settings);
 
   const std::filesystem::path& folder() const { return folder_; }
   std::filesystem::path fileFor(std::uint64_t key) const;
@@ -59,6 +69,14 @@ class ExitTableCache {
   };
 
  private:
+  using ReadMember = std::function<std::optional<skin::ExitTable>(std::size_t member,
+                                                                  const std::filesystem::path&)>;
+  using BuildAll = std::function<std::vector<skin::ExitTable>()>;
+  /// The tables of `keys`: from memory, else from disk, else all of them from build().
+  std::vector<std::shared_ptr<const skin::ExitTable>> obtain(const std::vector<std::uint64_t>& keys,
+                                                             const ReadMember& read,
+                                                             const BuildAll& build);
+  void writeQuietly(const skin::ExitTable& table, const std::filesystem::path& file);
   bool folderUsable();
 
   std::filesystem::path folder_;

@@ -74,7 +74,7 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
   spectral_ = scene.integrator.estimator == skin::Estimator::Spectral &&
               scene.integrator.skinMode != skin::SkinMode::Table;
   std::vector<std::vector<std::size_t>> bundles;  // the film's bands, as channel lists
-  if (spectral_) {
+  if (scene.integrator.estimator == skin::Estimator::Spectral) {  // walks, or tables' builds
     const Film layout(scene.film);
     for (std::size_t b = 0; b < layout.bandCount(); ++b) bundles.push_back(layout.bandChannels(b));
   }

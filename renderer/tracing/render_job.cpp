@@ -60,8 +60,10 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   const Integrator integrator(scene, wavelengths);
   if (tableMode && log) {
     const ExitTableCache& cache = ExitTableCache::shared();
+    const std::chrono::duration<double> setUp = Clock::now() - start;
     *log << "exit tables: " << cache.loaded() - loadedBefore << " loaded, "
-         << cache.built() - builtBefore << " built (cache '" << cache.folder().string() << "')\n";
+         << cache.built() - builtBefore << " built (cache '" << cache.folder().string()
+         << "'); scene set up in " << setUp.count() << " s\n";
   }
   std::string degenerate;
   if (integrator.skippedDegenerateTriangles(&degenerate) > 0 && log) *log << degenerate;

@@ -85,13 +85,15 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
   const double lo = std::min(mapMin_, mapMax_) * freckles_.minMultiplier();
   const double hi = std::max(mapMin_, mapMax_) * freckles_.maxMultiplier();
   const bool tableMode = skinMode == skin::SkinMode::Table;
+  const bool spectralTables = tableMode && !bundles.empty();
   walks_ = std::make_unique<SkinWalkCache>(
       specimen, lo, hi, channelWavelengths, spectra, desc.where,
       tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
-      effectTolerance, tableMode ? std::vector<std::vector<std::size_t>>{} : bundles);
+      spectralTables ? 0.0 : effectTolerance,
+      tableMode ? std::vector<std::vector<std::size_t>>{} : bundles);
   if (tableMode)
     tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(),
-                                               SkinTableCache::renderSettings());
+                                               SkinTableCache::renderSettings(), spectralTables);
   for (int i = 0; i < kLobeTableSize; ++i)
     lobeNormalisation_.push_back(
         facetReflectionLeaves(aspectRatio_, static_cast<double>(i) / (kLobeTableSize - 1)));

@@ -93,6 +93,9 @@ class SkinMaterial {
   /// index in SceneDesc::materials (exit points must land on shapes of this material).
   /// SkinMode::Table samples exit tables (skin/exit_table.h, from ExitTableCache::shared(), with
   /// SkinTableCache::kTableMelaninLevels levels) instead of walking; Walk runs the exact walk.
+  /// `bundles` not empty selects the spectral estimator: in walk mode one spectral walk per bundle
+  /// and level; in table mode tables built from spectral walks (SkinTableCache's spectral build,
+  /// full model, no effect plan).
   SkinMaterial(const MaterialDesc& desc, const skin::Specimen& specimen, std::size_t materialIndex,
                double unitCm, const std::vector<double>& channelWavelengths,
                const skin::SpectralDatabase& spectra,

@@ -5,6 +5,11 @@
 // Table mode uses kTableMelaninLevels levels instead of SkinWalkCache::kMelaninLevels: the
 // stochastic rounding between levels already interpolates the response linearly in the multiplier
 // (skin_walk_cache.h), and every level costs channels × K × N walks to build.
+//
+// With spectral building (the spectral estimator, issue 11) the channels of a level are grouped by
+// the bundle rule (skin/spectral_bundle.h) and every bundle's tables come from one set of spectral
+// walks (ExitTable::buildBundle): levels × bundles × K × N walks in all instead of levels ×
+// channels × K × N. The walks must then be the full model (no effect plan).
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -24,7 +29,7 @@ class SkinTableCache {
   static skin::ExitTableSettings renderSettings();
 
   SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,
-                 const skin::ExitTableSettings& settings);
+                 const skin::ExitTableSettings& settings, bool spectralBuild = false);
 
   const skin::ExitTable& table(std::size_t channel, int level) const {
     return *tables_[static_cast<std::size_t>(level) * channels_ + channel];

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <stdlib.h>
 #include <thread>
+#include <vector>
 
 #include "renderer/scene/data_paths.h"
 #include "renderer/tracing/exit_table_cache.h"
@@ -99,6 +100,37 @@ TEST(ExitTableCache, SecondGetLoadsInsteadOfBuilding) {
   const auto other = again.get(skin::SkinWalk(changed), small());
   EXPECT_NE(other->key(), loaded->key());
   EXPECT_EQ(again.built(), 1u);
+}
+
+TEST(ExitTableCache, ABundleIsBuiltOnceAndLoadedWhole) {
+  const auto folder = freshFolder("bundle");
+  const std::vector<skin::SkinWalk> walks{skin::SkinWalk(s1Optics(500)),
+                                          skin::SkinWalk(s1Optics(510))};
+  const std::vector<const skin::SkinWalk*> bundle{&walks[0], &walks[1]};
+  std::vector<std::shared_ptr<const skin::ExitTable>> built;
+  {
+    ExitTableCache cache(folder);
+    built = cache.getBundle(bundle, small());
+    ASSERT_EQ(built.size(), 2u);
+    EXPECT_EQ(cache.built(), 2u);  // both members from one set of walks
+    EXPECT_EQ(built[1]->bundleSize(), 2u);
+    EXPECT_EQ(cache.getBundle(bundle, small())[1], built[1]);  // in memory
+    EXPECT_EQ(cache.built(), 2u);
+  }
+  {
+    ExitTableCache again(folder);
+    const auto loaded = again.getBundle(bundle, small());
+    EXPECT_EQ(again.loaded(), 2u);
+    EXPECT_EQ(again.built(), 0u);
+    EXPECT_EQ(loaded[0]->key(), built[0]->key());
+  }
+  // One member's file lost: the bundle is built again, whole.
+  std::filesystem::remove(ExitTableCache(folder).fileFor(built[1]->key()));
+  ExitTableCache third(folder);
+  third.getBundle(bundle, small());
+  EXPECT_EQ(third.built(), 2u);
+  EXPECT_EQ(bytesOf(third.fileFor(built[1]->key())).size(),
+            bytesOf(third.fileFor(built[0]->key())).size());
 }
 
 TEST(ExitTableCache, DamagedOrForeignFilesAreRebuilt) {
