@@ -13,6 +13,7 @@ void registerForwardProfileCommand(CLI::App& app);  // forward_profile_command.c
 void registerRadialProfileCommand(CLI::App& app);   // radial_profile_command.cpp
 void registerRenderCommand(CLI::App& app);          // render_command.cpp
 void registerFigureCommand(CLI::App& app);          // figure_command.cpp
+void registerGalleryCommand(CLI::App& app);         // gallery_command.cpp
 void registerImageDiffCommand(CLI::App& app);       // image_diff_command.cpp
 void registerFitCommand(CLI::App& app);             // fit_command.cpp
 void registerValidateCommand(CLI::App& app);        // validate_command.cpp

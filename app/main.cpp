@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   hylios::registerRadialProfileCommand(app);
   hylios::registerRenderCommand(app);
   hylios::registerFigureCommand(app);
+  hylios::registerGalleryCommand(app);
   hylios::registerImageDiffCommand(app);
   hylios::registerFitCommand(app);
   hylios::registerValidateCommand(app);

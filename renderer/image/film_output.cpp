@@ -346,8 +346,9 @@ std::vector<fs::path> writeFilmOutputs(
     values.reserve(static_cast<std::size_t>(film.width()) * film.height());
     for (int y = 0; y < film.height(); ++y)
       for (int x = 0; x < film.width(); ++x) values.push_back(pixelBandMean(film, x, y, channels));
-    const auto panel = pseudoColourPanel(values, film.width(), film.height(), bands[b].previewMin,
-                                         bands[b].previewMax, bandCaption(bands[b]));
+    const auto panel =
+        pseudoColourPanel(values, film.width(), film.height(), bands[b].previewMin,
+                          bands[b].previewMax, "radiance at " + bandCaption(bands[b]));
     writePngAtomically(panel.image, png);
     written.push_back(png);
     if (!panel.labelled) {
@@ -366,7 +367,8 @@ std::vector<fs::path> writeFilmOutputs(
 }
 
 void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<std::string>& labels,
-                       const fs::path& out, int columns) {
+                       const fs::path& out, int columns,
+                       const std::vector<std::string>& titleLines) {
   if (panels.empty())
     throw std::invalid_argument("contact sheet '" + out.string() + "': no panels");
   if (labels.size() != panels.size()) {
@@ -399,25 +401,36 @@ void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<st
   const int columnCount = std::min<int>(columns, static_cast<int>(panels.size()));
   const int rowCount = (static_cast<int>(panels.size()) + columnCount - 1) / columnCount;
   const int pitchX = cellWidth + padding, pitchY = cellHeight + labelHeight + padding;
-  OIIO::ImageBuf sheet = makeCanvas(padding + columnCount * pitchX, padding + rowCount * pitchY);
+  const int titleFont = std::max(12, fontSize * 3 / 4), titleLine = titleFont * 3 / 2;
+  const int titleHeight = static_cast<int>(titleLines.size()) * titleLine;
+  const int sheetWidth = padding + columnCount * pitchX;
+  OIIO::ImageBuf sheet = makeCanvas(sheetWidth, padding + titleHeight + rowCount * pitchY);
   bool labelled = true;
+  for (std::size_t t = 0; t < titleLines.size(); ++t)
+    labelled =
+        drawText(sheet, sheetWidth / 2, padding + static_cast<int>(t) * titleLine + titleFont,
+                 titleLines[t], fittingFontSize(titleLines[t], sheetWidth - 2 * padding, titleFont),
+                 TextAnchor::Centre) &&
+        labelled;
   for (std::size_t i = 0; i < images.size(); ++i) {
     const int column = static_cast<int>(i) % columnCount, row = static_cast<int>(i) / columnCount;
-    const int left = padding + column * pitchX, top = padding + row * pitchY;
+    const int left = padding + column * pitchX, top = padding + titleHeight + row * pitchY;
     const int x = left + (cellWidth - images[i].spec().width) / 2;
     const int y = top + (cellHeight - images[i].spec().height) / 2;
     if (!OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, images[i])) {
       throw std::runtime_error("contact sheet: cannot paste '" + panels[i].string() +
                                "': " + sheet.geterror());
     }
-    labelled = drawText(sheet, left + cellWidth / 2, top + cellHeight + fontSize + fontSize / 3,
-                        labels[i], fontSize, TextAnchor::Centre) &&
-               labelled;
+    labelled =
+        drawText(sheet, left + cellWidth / 2, top + cellHeight + fontSize + fontSize / 3, labels[i],
+                 fittingFontSize(labels[i], cellWidth, fontSize), TextAnchor::Centre) &&
+        labelled;
   }
   writePngAtomically(sheet, out);
   if (!labelled) {
     // No text rendering here: the labels go to a sidecar file, in reading order.
     std::string text;
+    for (const std::string& line : titleLines) text += "title: " + line + "\n";
     for (std::size_t i = 0; i < labels.size(); ++i) {
       text += "row " + std::to_string(i / columnCount + 1) + ", column " +
               std::to_string(i % columnCount + 1) + ": " + labels[i] + "\n";

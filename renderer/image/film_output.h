@@ -13,8 +13,8 @@
 //     band's radiance as grey (no exposure).
 //   * any other band (single wavelength, or a range: the mean over its channels): the value mapped
 //     linearly from the band's fixed [previewMin, previewMax] onto the colour map (magma), with a
-//     colour bar strip below (ticks at min, middle, max; min/max and the band's wavelength as text
-//     when OpenImageIO can render text — otherwise the numbers go to <stem>_<band>_scale.txt).
+//     colour bar strip below (ticks at min, middle, max; min/max and "radiance at <wavelength>" as
+//     text when OpenImageIO can render text — otherwise the numbers go to <stem>_<band>_scale.txt).
 // Any NaN/Inf in the film (or a value beyond float) is an error and nothing is written. Every file
 // is written to a temporary name and renamed (never half-written).
 #pragma once
@@ -59,9 +59,11 @@ NoiseImage filmHalfNoiseImage(const Film& film, bool odd);
 /// its coverage mask.
 std::vector<GroupNoise> filmNoise(const Film& film);
 
-/// Pastes PNG panels side by side in a grid with their labels under them (a contact sheet).
+/// Pastes PNG panels side by side in a grid with their labels under them (a contact sheet), under
+/// `titleLines` (each centred; none: no title). Without text rendering the labels and title go to
+/// <out stem>.labels.txt.
 void writeContactSheet(const std::vector<std::filesystem::path>& panels,
                        const std::vector<std::string>& labels, const std::filesystem::path& out,
-                       int columns);
+                       int columns, const std::vector<std::string>& titleLines = {});
 
 }  // namespace hylios

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "renderer/image/colour_tables.h"
 #include "skin/core/atomic_file.h"
@@ -51,10 +53,50 @@ bool textRenderingAvailable() {
   return available;
 }
 
-bool drawText(OIIO::ImageBuf& canvas, int x, int baselineY, const std::string& text, int fontSizePx,
-              TextAnchor anchor) {
-  if (text.empty()) return true;
+std::string asciiText(const std::string& text) {
+  static const std::pair<const char*, const char*> kReplacements[] = {
+      {"\u2212", "-"}, {"\u2013", "-"},      {"\u2014", "-"}, {"\u00b7", "|"},
+      {"\u00b2", "2"}, {"\u00b3", "3"},      {"\u00b5", "u"}, {"\u00b1", "+/-"},
+      {"\u00d7", "x"}, {"\u03bb", "lambda"}, {"\u2192", "->"}};
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (static_cast<unsigned char>(text[i]) < 0x80) {
+      out += text[i++];
+      continue;
+    }
+    bool replaced = false;
+    for (const auto& [from, to] : kReplacements) {
+      const std::size_t n = std::char_traits<char>::length(from);
+      if (text.compare(i, n, from) == 0) {
+        out += to;
+        i += n;
+        replaced = true;
+        break;
+      }
+    }
+    if (replaced) continue;
+    out += '?';  // one '?' per unknown character: skip its continuation bytes
+    ++i;
+    while (i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) ++i;
+  }
+  return out;
+}
+
+int fittingFontSize(const std::string& text, int widthPx, int fontSizePx, int minimumPx) {
+  if (!textRenderingAvailable() || text.empty()) return fontSizePx;
+  const std::string ascii = asciiText(text);
+  int size = fontSizePx;
+  while (size > minimumPx &&
+         OIIO::ImageBufAlgo::text_size(ascii, size, fontName()).width() > widthPx)
+    --size;
+  return size;
+}
+
+bool drawText(OIIO::ImageBuf& canvas, int x, int baselineY, const std::string& utf8Text,
+              int fontSizePx, TextAnchor anchor) {
+  if (utf8Text.empty()) return true;
   if (!textRenderingAvailable()) return false;
+  const std::string text = asciiText(utf8Text);
   const auto alignX = anchor == TextAnchor::Left    ? OIIO::ImageBufAlgo::TextAlignX::Left
                       : anchor == TextAnchor::Right ? OIIO::ImageBufAlgo::TextAlignX::Right
                                                     : OIIO::ImageBufAlgo::TextAlignX::Center;

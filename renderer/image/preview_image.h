@@ -18,9 +18,16 @@ bool textRenderingAvailable();
 
 enum class TextAnchor { Left, Centre, Right };
 /// Draws white `text` with its baseline at y, anchored at x. Returns false (drawing nothing) when
-/// text rendering is unavailable.
+/// text rendering is unavailable. OpenImageIO's text drawing takes bytes, not UTF-8, so the few
+/// non-ASCII characters captions use are drawn as ASCII first (asciiText).
 bool drawText(OIIO::ImageBuf& canvas, int x, int baselineY, const std::string& text, int fontSizePx,
               TextAnchor anchor);
+/// `text` with − – — → "-", · → "|", ² → "2", ³ → "3", µ → "u", ± → "+/-", × → "x", λ → "lambda",
+/// → → "->" and any other non-ASCII byte → "?".
+std::string asciiText(const std::string& text);
+/// The largest font size up to `fontSizePx` (at least `minimumPx`) at which `text` is at most
+/// `widthPx` wide; `fontSizePx` when text rendering is unavailable.
+int fittingFontSize(const std::string& text, int widthPx, int fontSizePx, int minimumPx = 9);
 
 /// A black 3-channel float canvas.
 OIIO::ImageBuf makeCanvas(int width, int height);

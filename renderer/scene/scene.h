@@ -88,6 +88,9 @@ struct LightDesc {
   double spotInnerDeg = 0;
   double spotOuterDeg = 0;
   std::string shape;  ///< Area: name of the emitting shape
+  /// Environment: whether camera rays that miss every shape see it. false: black behind the
+  /// subject (the paper's panels); it still lights the scene and is seen in reflections.
+  bool cameraVisible = true;
   SourceLocation where;
 };
 

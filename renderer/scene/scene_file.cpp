@@ -31,7 +31,7 @@ const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
         "sampler"}},
       {"light",
        {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg",
-        "shape"}},
+        "shape", "camera_visible"}},
       {"material",
        {"name", "type", "specimen", "overrides", "freckles", "melanin_map",
         "water_reduction_percent", "reflectance", "refractive_index", "roughness"}},
@@ -276,7 +276,10 @@ LightDesc readLight(const toml::table& t, int index, const TomlSource& src,
       throw SceneError(r.whereValue("shape"), fmt::format("unknown shape '{}' (named shapes: {})",
                                                           l.shape, shapes.list()));
   }
-  if (type == "environment") l.kind = LightDesc::Kind::Environment;
+  if (type == "environment") {
+    l.kind = LightDesc::Kind::Environment;
+    l.cameraVisible = r.boolean("camera_visible", true);
+  }
   r.finish(fmt::format("a \"{}\" light", type));
   return l;
 }

@@ -241,7 +241,8 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
   for (int depth = firstDepth;; ++depth) {
     const std::optional<SurfaceHit> hit = geometry_->intersect(ray);
     if (!hit) {
-      if (lights_->hasEnvironment()) {
+      // A camera ray (depth 0) sees the environment only when it is camera-visible.
+      if (lights_->hasEnvironment() && (depth > 0 || lights_->environmentCameraVisible())) {
         const double mis = lastSpecular ? 1.0 : powerHeuristic(lastPdf, lights_->environmentPdf());
         for (std::size_t i = 0; i < n; ++i)
           L[i] += beta[i] * lights_->environmentRadiance(spectrum[i]) * mis;

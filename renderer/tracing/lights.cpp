@@ -54,6 +54,7 @@ LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry,
         if (environment_ >= 0)
           throw SceneError(desc.where, "only one environment light is allowed");
         environment_ = static_cast<int>(lights_.size());
+        environmentCameraVisible_ = desc.cameraVisible;
         break;
     }
     lights_.push_back(std::move(light));

@@ -64,6 +64,8 @@ class LightSet {
   double emission(const LightSample& sample, std::size_t channel) const;
 
   bool hasEnvironment() const { return environment_ >= 0; }
+  /// Whether camera rays that miss every shape see the environment (LightDesc::cameraVisible).
+  bool environmentCameraVisible() const { return environmentCameraVisible_; }
   double environmentRadiance(std::size_t channel) const;
   /// Selection × solid-angle density with which sampleGeometry() yields a given environment
   /// direction.
@@ -96,6 +98,7 @@ class LightSet {
   std::vector<int> lightOfShape_;
   std::vector<bool> convexShape_;
   int environment_ = -1;
+  bool environmentCameraVisible_ = true;
 };
 
 }  // namespace hylios

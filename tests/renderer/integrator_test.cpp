@@ -116,6 +116,21 @@ TEST(Integrator, WhiteFurnaceImageBackgroundIsExactAndDepthZeroIsBlack) {
   EXPECT_DOUBLE_EQ(film.value(12, 12, 0), 0.0);  // sphere, no bounce allowed
 }
 
+TEST(Integrator, AHiddenEnvironmentIsBlackBehindTheSubjectAndStillLightsIt) {
+  // camera_visible = false: camera rays that miss see 0, but the sphere still reflects ρL in
+  // expectation (next-event estimation and bounces that reach the sky count as before).
+  SceneDesc scene = sphereScene(diffuse(0.5), 2.0);
+  scene.lights[0].cameraVisible = false;
+  Film film(scene.film);
+  const Integrator integrator(scene, {550});
+  integrator.render(film, quietRenderOptions("test"));
+  EXPECT_EQ(film.value(0, 0, 0), 0.0);  // the sky, hidden
+  EXPECT_GT(film.value(12, 12, 0), 0.0);
+  const MeanAndError m = diskAverage(integrator, 20000, 5);
+  EXPECT_NEAR(m.mean, 1.0, 4 * m.standardError + 1e-12) << "σ " << m.standardError;
+  EXPECT_LT(m.standardError, 0.01);  // σ ≈ 0.002, as for the visible sky
+}
+
 TEST(Integrator, PointLightOnADiffusePlaneIsExact) {
   // L = ρ/π · I·cosθ/d² with no noise: one delta light, NEE only.
   SceneDesc scene = sphereScene(diffuse(0.6), 0, 1);

@@ -271,6 +271,20 @@ TEST(SceneFile, KeyUnusedByItsVariant) {
               "centre_nm", "key 'centre_nm' is not used by a \"constant\" spectrum");
 }
 
+TEST(SceneFile, EnvironmentCameraVisibility) {
+  // Seen by the camera unless camera_visible = false; the key belongs to environment lights only.
+  EXPECT_TRUE(parse(kFullScene).lights.back().cameraVisible);
+  const std::string hidden = "type = \"constant\", scale = 0.1 }\ncamera_visible = false";
+  EXPECT_FALSE(
+      parse(edited("type = \"constant\", scale = 0.1 }", hidden)).lights.back().cameraVisible);
+  expectError("outer_angle_deg = 30", "outer_angle_deg = 30\ncamera_visible = false",
+              "camera_visible", "key 'camera_visible' is not used by a \"spot\" light");
+  const std::string number = edited("type = \"constant\", scale = 0.1 }",
+                                    "type = \"constant\", scale = 0.1 }\ncamera_visible = 0");
+  EXPECT_EQ(errorOf(number), positionOf(number, "0", number.find("camera_visible")) +
+                                 ": 'camera_visible' must be a boolean, got an integer");
+}
+
 TEST(SceneFile, TopLevelTableMisplaced) {
   expectError("[integrator]", "[integrators]", "integrators",
               "unknown key 'integrators' in the top level (known keys: unit_cm, camera, film, "
