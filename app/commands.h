@@ -17,5 +17,6 @@ void registerGalleryCommand(CLI::App& app);         // gallery_command.cpp
 void registerImageDiffCommand(CLI::App& app);       // image_diff_command.cpp
 void registerFitCommand(CLI::App& app);             // fit_command.cpp
 void registerValidateCommand(CLI::App& app);        // validate_command.cpp
+void registerSweepCommand(CLI::App& app);           // sweep_command.cpp
 
 }  // namespace hylios

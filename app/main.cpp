@@ -2,11 +2,15 @@
 #include <CLI/CLI.hpp>
 
 #include <exception>
+#include <fstream>
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/mpi_session.h"
 
 int main(int argc, char** argv) {
+  // Under mpirun/srun (a build with MPI): one rank of the job, only rank 0 prints (mpi_session.h).
+  const hylios::MpiSession mpi(argc, argv);
   CLI::App app{"hylios — the HyLIoS hyperspectral skin model and renderer (250–2500 nm)"};
   app.require_subcommand(1);
   hylios::registerCoefficientsCommand(app);
@@ -21,13 +25,15 @@ int main(int argc, char** argv) {
   hylios::registerImageDiffCommand(app);
   hylios::registerFitCommand(app);
   hylios::registerValidateCommand(app);
+  hylios::registerSweepCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (hylios::MpiSession::isRoot()) return app.exit(e);
+    std::ofstream quiet;  // every rank parsed the same arguments: rank 0 has said it
+    return app.exit(e, quiet, quiet);
   } catch (const std::exception& e) {
-    std::cerr << "hylios: error: " << e.what() << "\n";
-    return 1;
+    return hylios::MpiSession::failCommand(e.what());
   }
   return 0;
 }

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <unistd.h>
 
+#include "app/mpi_session.h"
+
 namespace hylios {
 
 ProgressBar::ProgressBar(std::string label, std::uint64_t total)
@@ -14,7 +16,9 @@ ProgressBar::ProgressBar(std::string label, std::uint64_t total)
 
 ProgressBar::~ProgressBar() { finish(); }
 
-bool ProgressBar::enabledOnThisTerminal() { return ::isatty(STDERR_FILENO) == 1; }
+bool ProgressBar::enabledOnThisTerminal() {
+  return ::isatty(STDERR_FILENO) == 1 && MpiSession::isRoot();  // one bar for an MPI job
+}
 
 void ProgressBar::advance(std::uint64_t steps) {
   const std::uint64_t done = done_.fetch_add(steps) + steps;

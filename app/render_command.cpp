@@ -13,6 +13,8 @@
 
 #include "app/commands.h"
 #include "app/interrupt_signal.h"
+#include "app/mpi_render.h"
+#include "app/mpi_session.h"
 #include "app/option_checks.h"
 #include "app/render_options.h"
 #include "renderer/image/film_output.h"
@@ -73,22 +75,37 @@ std::vector<NamedPath> sceneInputs(const SceneDesc& scene) {
 void runRender(const RenderArguments& args, const CLI::App& command) {
   RenderSettings settings = renderSettingsFromOptions(args.options);
   if (args.seedGiven) settings.seed = args.seed;
-  // Outputs first: a bad --out fails now, not after the render (issue 13, rows 6 and 7).
-  checkOutputs({{"--out", args.out}}, {{"scene", args.scene}});
+  // Outputs first: a bad --out fails now, not after the render (issue 13, rows 6 and 7). Under
+  // MPI rank 0 checks and every rank stops with its verdict (app/mpi_session.h).
+  shareRootVerdict([&] { checkOutputs({{"--out", args.out}}, {{"scene", args.scene}}); });
   const SceneDesc scene = applyRenderSettings(loadSceneFile(args.scene), settings);
-  checkOutputs({{"--out", args.out}}, sceneInputs(scene));
   const RenderIdentity identity = renderIdentity(scene, imageAffectingOptions(command));
   const std::filesystem::path checkpoint = checkpointPathFor(args.out);
-  std::error_code noCheckpoint;
-  if (!args.resume && std::filesystem::exists(checkpoint, noCheckpoint))
-    throw std::runtime_error(
-        "'" + checkpoint.string() + "' holds an interrupted render of '" + args.out +
-        "'; continue it with the same command and --resume, or delete that file to start "
-        "afresh (nothing was changed)");
+  shareRootVerdict([&] {
+    checkOutputs({{"--out", args.out}}, sceneInputs(scene));
+    if (MpiSession::distributed() && args.resume)
+      throw std::invalid_argument(
+          "--resume continues a render of one process; run it without mpirun/srun");
+    std::error_code noCheckpoint;
+    if (!args.resume && std::filesystem::exists(checkpoint, noCheckpoint))
+      throw std::runtime_error(
+          "'" + checkpoint.string() + "' holds an interrupted render of '" + args.out +
+          "'; continue it with the same command and --resume, or delete that file to start "
+          "afresh (nothing was changed)");
+  });
   if (args.resume)
     settings.resumeFrom =
         std::make_shared<const RenderCheckpoint>(readMatchingCheckpoint(checkpoint, identity));
   checkRenderMemory(scene);
+  if (MpiSession::distributed()) {  // tiles divided among the ranks; SIGINT/SIGTERM end the job
+    settings.division = renderDivisionAcrossRanks();
+    const RenderResult result = renderScene(scene, settings, &std::cout);
+    if (!MpiSession::isRoot()) return;
+    for (const auto& path :
+         writeFilmOutputs(*result.film, args.out, renderAttributes(scene, result)))
+      std::cout << "wrote " << path.string() << "\n";
+    return;
+  }
   const InterruptSignalScope signals;
   settings.stopRequested = [&signals] { return signals.requested(); };
   const RenderResult result = renderScene(scene, settings, &std::cout);

@@ -14,6 +14,8 @@
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
 #include "app/measured_spectrum.h"
+#include "app/mpi_session.h"
+#include "app/mpi_spectral.h"
 #include "app/option_checks.h"
 #include "app/progress_bar.h"
 #include "app/specimen_options.h"
@@ -120,9 +122,11 @@ std::string measuredFile(const std::string& measured) {
 }
 
 void runSpectrum(const SpectrumArguments& args) {
-  checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
-               {inputFile("--specimen", args.specimen.specimen),
-                inputFile("--measured", measuredFile(args.measured))});
+  shareRootVerdict([&] {  // under MPI: checked on rank 0, every rank stops with its verdict
+    checkOutputs({{"--out", args.out}, {"--plot", args.plot, true}},
+                 {inputFile("--specimen", args.specimen.specimen),
+                  inputFile("--measured", measuredFile(args.measured))});
+  });
   const ThreadLimit threadLimit(args.threads);
   const skin::Specimen specimen = loadSpecimenWithOverrides(args.specimen);
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
@@ -142,7 +146,9 @@ void runSpectrum(const SpectrumArguments& args) {
   ProgressBar progress("spectrum " + specimen.name, wavelengths.size());
   if (args.estimator == skin::Estimator::Spectral && args.skinModel == skin::SkinMode::Walk) {
     // One path per bundle of wavelengths, the full model (no effect plan: bound 0).
-    tallies = skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
+    // Under MPI the chunks are divided among the ranks (app/mpi_spectral.h); the other branches
+    // run whole on every rank.
+    tallies = simulateSkinSpectralOnRanks(optics, skin::commandSpectralRun(run));
     progress.advance(wavelengths.size());
   } else if (args.estimator == skin::Estimator::Spectral) {
     // Table mode: each bundle's tables from one set of spectral walks (full model).
@@ -159,6 +165,7 @@ void runSpectrum(const SpectrumArguments& args) {
     });
   }
   progress.finish();
+  if (!MpiSession::isRoot()) return;  // only rank 0 prints and writes
   if (args.explain) printPlans(plans);
   writeTextAtomically(args.out, formatCsv(wavelengths, tallies, plans));
   if (measured) {

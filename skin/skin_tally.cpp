@@ -2,11 +2,65 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <stdexcept>
 
 #include "skin/core/constants.h"
 
 namespace hylios::skin {
-namespace {}
+namespace {
+
+template <class T>
+void put(std::string& bytes, const T& value) {
+  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+template <class T>
+T take(const std::string& bytes, std::size_t& offset) {
+  if (offset > bytes.size() || bytes.size() - offset < sizeof(T))
+    throw std::invalid_argument("SkinTally::fromBytes: the state ends early (byte " +
+                                std::to_string(offset) + " of " + std::to_string(bytes.size()) +
+                                ")");
+  T value;
+  std::memcpy(&value, bytes.data() + offset, sizeof value);
+  offset += sizeof value;
+  return value;
+}
+
+void putStatistic(std::string& bytes, const RunningStatistic& s) {
+  put(bytes, s.count());
+  put(bytes, s.sum());
+  put(bytes, s.sumSquares());
+}
+
+RunningStatistic takeStatistic(const std::string& bytes, std::size_t& offset) {
+  const auto count = take<std::uint64_t>(bytes, offset);
+  const auto sum = take<double>(bytes, offset);
+  const auto sumSquares = take<double>(bytes, offset);
+  return RunningStatistic::restored(count, sum, sumSquares);
+}
+
+void putHistogram(std::string& bytes, const std::optional<Histogram>& h) {
+  if (!h) return;
+  put(bytes, h->packets());
+  for (std::size_t i = 0; i < h->sums().size(); ++i) {
+    put(bytes, h->sums()[i]);
+    put(bytes, h->sumSquares()[i]);
+  }
+}
+
+void takeHistogram(const std::string& bytes, std::size_t& offset, std::optional<Histogram>& h) {
+  if (!h) return;
+  const auto packets = take<std::uint64_t>(bytes, offset);
+  std::vector<double> sums(h->sums().size()), sumSquares(h->sums().size());
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    sums[i] = take<double>(bytes, offset);
+    sumSquares[i] = take<double>(bytes, offset);
+  }
+  h->restore(std::move(sums), std::move(sumSquares), packets);
+}
+
+}  // namespace
 
 SkinTally::SkinTally(const TallyOptions& options) : options_(options) {
   if (options.polarBins > 0) {
@@ -90,6 +144,33 @@ void SkinTally::merge(const SkinTally& other) {
     transmittedDirections_->merge(*other.transmittedDirections_);
   }
   if (radialExits_) radialExits_->merge(*other.radialExits_);
+}
+
+void SkinTally::appendBytes(std::string& bytes) const {
+  for (const RunningStatistic* s : {&total_, &surface_, &subsurface_, &transmitted_, &absorbed_,
+                                    &melanosomeAbsorbed_, &eventLimited_})
+    putStatistic(bytes, *s);
+  for (const RunningStatistic& s : absorbedByLayer_) putStatistic(bytes, s);
+  put(bytes, events_);
+  putHistogram(bytes, surfaceDirections_);
+  putHistogram(bytes, subsurfaceDirections_);
+  putHistogram(bytes, transmittedDirections_);
+  putHistogram(bytes, radialExits_);
+}
+
+SkinTally SkinTally::fromBytes(const TallyOptions& options, const std::string& bytes,
+                               std::size_t& offset) {
+  SkinTally t(options);
+  for (RunningStatistic* s : {&t.total_, &t.surface_, &t.subsurface_, &t.transmitted_,
+                              &t.absorbed_, &t.melanosomeAbsorbed_, &t.eventLimited_})
+    *s = takeStatistic(bytes, offset);
+  for (RunningStatistic& s : t.absorbedByLayer_) s = takeStatistic(bytes, offset);
+  t.events_ = take<std::uint64_t>(bytes, offset);
+  takeHistogram(bytes, offset, t.surfaceDirections_);
+  takeHistogram(bytes, offset, t.subsurfaceDirections_);
+  takeHistogram(bytes, offset, t.transmittedDirections_);
+  takeHistogram(bytes, offset, t.radialExits_);
+  return t;
 }
 
 }  // namespace hylios::skin

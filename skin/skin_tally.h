@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "skin/core/statistics.h"
 #include "skin/layer.h"
@@ -59,6 +60,13 @@ class SkinTally {
   /// A weighted path (every quantity scores, zeros included; standard errors from the scores).
   void record(const PathScore& score);
   void merge(const SkinTally& other);
+  /// Appends the tally's exact state (sums, counts, histograms; native byte order) to `bytes`, for
+  /// a tally computed in another process of the same machine type (app/mpi_session.h).
+  void appendBytes(std::string& bytes) const;
+  /// The tally appendBytes wrote at `offset` of `bytes` (offset is moved past it), for tallies of
+  /// `options`. Throws std::invalid_argument when the bytes are too short for them.
+  static SkinTally fromBytes(const TallyOptions& options, const std::string& bytes,
+                             std::size_t& offset);
 
   std::uint64_t rays() const { return total_.count(); }
   Estimate reflectance() const { return total_.estimate(); }

@@ -57,6 +57,16 @@ std::uint64_t bundleStream(const std::vector<double>& wavelengthsNm) {
 
 std::vector<SkinTally> simulateSkinSpectral(const std::vector<SkinOptics>& optics,
                                             const SpectralRunOptions& options) {
+  return mergeSpectralChunks(simulateSkinSpectralChunks(optics, options), optics.size(),
+                             options.tally);
+}
+
+SpectralChunks simulateSkinSpectralChunks(const std::vector<SkinOptics>& optics,
+                                          const SpectralRunOptions& options, std::size_t part,
+                                          std::size_t parts) {
+  if (parts == 0 || part >= parts)
+    throw std::invalid_argument("simulateSkinSpectralChunks: part " + std::to_string(part) +
+                                " of " + std::to_string(parts));
   if (!(options.incidenceDeg >= 0 && options.incidenceDeg < 90))
     throw std::invalid_argument("incidence angle " + std::to_string(options.incidenceDeg) +
                                 "° is outside [0°, 90°)");
@@ -78,8 +88,12 @@ std::vector<SkinTally> simulateSkinSpectral(const std::vector<SkinOptics>& optic
       chunks.push_back({b, first, std::min(options.rays, first + kPathsPerChunk)});
   }
   const Vec3 incident = incidentDirection(options.incidenceDeg);
-  std::vector<std::vector<SkinTally>> chunkTallies(chunks.size());
+  SpectralChunks result;
+  for (const Chunk& chunk : chunks) result.members.push_back(bundles[chunk.bundle]);
+  std::vector<std::vector<SkinTally>>& chunkTallies = result.tallies;
+  chunkTallies.resize(chunks.size());
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    if (c % parts != part) return;  // another part's chunk
     const Chunk& chunk = chunks[c];
     std::vector<SkinTally>& tallies = chunkTallies[c];
     tallies.assign(bundles[chunk.bundle].size(), SkinTally(options.tally));
@@ -92,10 +106,19 @@ std::vector<SkinTally> simulateSkinSpectral(const std::vector<SkinOptics>& optic
       recordPath(path, pointers);
     }
   });
-  std::vector<SkinTally> result(optics.size(), SkinTally(options.tally));
-  for (std::size_t c = 0; c < chunks.size(); ++c) {
-    const auto& members = bundles[chunks[c].bundle];
-    for (std::size_t k = 0; k < members.size(); ++k) result[members[k]].merge(chunkTallies[c][k]);
+  return result;
+}
+
+std::vector<SkinTally> mergeSpectralChunks(const SpectralChunks& chunks, std::size_t count,
+                                           const TallyOptions& tally) {
+  std::vector<SkinTally> result(count, SkinTally(tally));
+  for (std::size_t c = 0; c < chunks.members.size(); ++c) {
+    const auto& members = chunks.members[c];
+    if (chunks.tallies.at(c).size() != members.size())
+      throw std::invalid_argument("mergeSpectralChunks: chunk " + std::to_string(c) +
+                                  " was not run");
+    for (std::size_t k = 0; k < members.size(); ++k)
+      result.at(members[k]).merge(chunks.tallies[c][k]);
   }
   return result;
 }

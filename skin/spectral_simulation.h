@@ -35,4 +35,20 @@ std::uint64_t bundleStream(const std::vector<double>& wavelengthsNm);
 std::vector<SkinTally> simulateSkinSpectral(const std::vector<SkinOptics>& optics,
                                             const SpectralRunOptions& options);
 
+/// The same run in its fixed chunks, for launchers that divide the chunks among processes
+/// (app/mpi_spectral.h): chunk c (paths [first, last) of one bundle, in bundle order) is run only
+/// when c % parts == part. mergeSpectralChunks of the chunks of every part, put together, is
+/// exactly what simulateSkinSpectral returns (the same merge in chunk order).
+struct SpectralChunks {
+  std::vector<std::vector<std::size_t>> members;  ///< per chunk: its bundle's indices into optics
+  std::vector<std::vector<SkinTally>> tallies;    ///< per chunk: one per member; empty if not run
+};
+SpectralChunks simulateSkinSpectralChunks(const std::vector<SkinOptics>& optics,
+                                          const SpectralRunOptions& options, std::size_t part = 0,
+                                          std::size_t parts = 1);
+/// Merges every chunk's tallies in chunk order into one tally per optics entry (`count` of them);
+/// throws std::invalid_argument when a chunk was not run.
+std::vector<SkinTally> mergeSpectralChunks(const SpectralChunks& chunks, std::size_t count,
+                                           const TallyOptions& tally);
+
 }  // namespace hylios::skin

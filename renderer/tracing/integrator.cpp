@@ -418,9 +418,18 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
                                 " samples per pixel, the target is " + std::to_string(spp));
   if (options.samplesPerPass < 0)
     throw std::invalid_argument("Integrator::render: samplesPerPass must be >= 0");
-  const std::uint64_t tiles =
+  const RenderDivision& division = options.division;
+  if (division.parts == 0 || division.part >= division.parts)
+    throw std::invalid_argument("Integrator::render: part " + std::to_string(division.part) +
+                                " of " + std::to_string(division.parts));
+  const std::uint64_t allTiles =
       static_cast<std::uint64_t>((film.width() + kTileSize - 1) / kTileSize) *
       static_cast<std::uint64_t>((film.height() + kTileSize - 1) / kTileSize);
+  const std::uint64_t tiles = allTiles / division.parts +
+                              (division.part < allTiles % division.parts ? 1 : 0);  // this part's
+  auto noiseOf = [&](const Film& f) {
+    return division.wholeFilmNoise ? division.wholeFilmNoise(f) : filmNoise(f);
+  };
   std::unique_ptr<RenderProgress> progress;
   if (options.progress && done < spp)
     progress = options.progress(options.label, tiles * static_cast<std::uint64_t>(spp - done));
@@ -432,7 +441,7 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   // kMinNoiseSamples, then at done × (noise/target)² × 1.1, at least ×1.25 and at most ×4.
   int nextCheck = std::max(kMinNoiseSamples, done);
   auto targetReached = [&] {
-    total.noise = filmNoise(film);
+    total.noise = noiseOf(film);
     const double ratio = worstNoise(total.noise) / *options.noiseTarget;
     if (ratio <= 1) return total.noiseTargetReached = true;
     const double growth = std::clamp(ratio * ratio * 1.1, 1.25, 4.0);
@@ -450,7 +459,7 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
     // saved anyway: a stop request abandons it between tiles (issue 13, row 8). Later passes are
     // short (adaptive) and finish, so that the samples so far can be saved.
     const bool firstPass = done == doneAtStart;
-    if (!renderPass(film, done, end, total, progress.get(),
+    if (!renderPass(film, done, end, division, total, progress.get(),
                     firstPass ? options.stopRequested : std::function<bool()>{}))
       break;
     const double seconds =
@@ -467,7 +476,7 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
       passSamples *= std::max(1, static_cast<int>(factor));
     }
   }
-  if (options.noiseTarget && total.noise.empty() && done > 1) total.noise = filmNoise(film);
+  if (options.noiseTarget && total.noise.empty() && done > 1) total.noise = noiseOf(film);
   if (progress) {
     if (done == spp || total.noiseTargetReached)
       progress->finish();
@@ -477,7 +486,8 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   return total;
 }
 
-bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderStats& total,
+bool Integrator::renderPass(Film& film, int firstSample, int endSample,
+                            const RenderDivision& division, RenderStats& total,
                             RenderProgress* progress, const std::function<bool()>& abandon) const {
   std::atomic<bool> abandoned{false};
   const int width = film.width(), height = film.height();
@@ -494,6 +504,7 @@ bool Integrator::renderPass(Film& film, int firstSample, int endSample, RenderSt
         RenderStats stats;
         std::vector<double> values;
         for (std::size_t tile = range.begin(); tile != range.end(); ++tile) {
+          if (tile % division.parts != division.part) continue;  // another part's tile
           if (abandoned.load(std::memory_order_relaxed) || (abandon && abandon())) {
             abandoned.store(true, std::memory_order_relaxed);
             break;

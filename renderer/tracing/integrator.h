@@ -64,6 +64,23 @@ struct RenderStats {
   bool noiseTargetReached = false;
 };
 
+/// Work division for several processes on one render (app/mpi_render.h; nothing here knows of
+/// MPI): only the tiles t with t % parts == part are rendered by this part, every part renders the
+/// same samples of its pixels, and the film's other pixels stay empty. A pixel's sums are those of
+/// the undivided render (its samples in order), so adding the parts' films, where each slot is
+/// filled by one part only, gives the undivided film bit for bit.
+struct RenderDivision {
+  std::size_t part = 0, parts = 1;
+  /// With a noise target: the noise of the whole film, given this part's film; every part calls it
+  /// at the same sample counts and must get the same figures (the MPI layer sums the films on rank
+  /// 0, estimates there and broadcasts). Empty: filmNoise(film).
+  std::function<std::vector<GroupNoise>(const Film& film)> wholeFilmNoise;
+  /// Called by renderScene after the render: makes `film` and `stats` those of the whole render on
+  /// the part that writes the outputs (the MPI layer sums them onto rank 0). Empty: nothing to do.
+  std::function<void(Film& film, RenderStats& stats)> gather;
+  bool divided() const { return parts > 1; }
+};
+
 /// Sample passes: render() adds samples to every pixel pass by pass (samples [a, b) of every
 /// pixel, then [b, c), ...), so it can stop between passes with the same number of samples in
 /// every pixel; a pixel's samples are always added in the order 0, 1, 2, ..., so the film's sums
@@ -85,6 +102,8 @@ struct RenderOptions {
   /// band, R, G, B and chromaticity) is at most this, checked after each pass from
   /// kMinNoiseSamples samples per pixel on; the film's spp is then the cap.
   std::optional<double> noiseTarget;
+  /// This process's share of the tiles (all of them by default).
+  RenderDivision division;
 };
 constexpr int kMinNoiseSamples = 8;
 constexpr double kAdaptivePassSeconds = 2.0;
@@ -181,8 +200,9 @@ class Integrator {
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
   /// Returns false when `abandon` (checked before each tile) asked to stop: the film then holds
   /// part of the pass and must not be written.
-  bool renderPass(Film& film, int firstSample, int endSample, RenderStats& total,
-                  RenderProgress* progress, const std::function<bool()>& abandon = {}) const;
+  bool renderPass(Film& film, int firstSample, int endSample, const RenderDivision& division,
+                  RenderStats& total, RenderProgress* progress,
+                  const std::function<bool()>& abandon = {}) const;
   Ray spawn(const glm::dvec3& point, const glm::dvec3& sideNormal, const glm::dvec3& direction,
             double tMax) const;
   /// A smooth dielectric of index `refractiveIndex` at `hit`: Fresnel-chosen mirror reflection or

@@ -84,6 +84,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   options.label = scene.file.filename().string();
   options.stopRequested = settings.stopRequested;
   options.noiseTarget = scene.integrator.noiseTarget;
+  options.division = settings.division;
   // A line after the first pass, then at most one every 10 s (the progress bar shows the rest).
   auto lastReport = Clock::time_point{};
   options.onPassDone = [&](int samplesDone, double) {
@@ -95,6 +96,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
          << std::endl;
   };
   result.stats = integrator.render(*result.film, options);
+  if (settings.division.gather) settings.division.gather(*result.film, result.stats);
   result.stopped = result.film->samplesPerPixelDone() < scene.film.samplesPerPixel &&
                    !result.stats.noiseTargetReached;
   const auto done = Clock::now();

@@ -37,6 +37,9 @@ struct RenderSettings {
   std::function<bool()> stopRequested;
   /// A checkpoint's state to continue (readMatchingCheckpoint has checked it against the scene).
   std::shared_ptr<const RenderCheckpoint> resumeFrom;
+  /// This process's share of the tiles and how the parts are put together (integrator.h); the
+  /// log is written after division.gather, with the whole render's counters.
+  RenderDivision division;
 };
 
 struct RenderResult {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hylios::skin {
@@ -49,6 +50,14 @@ class RunningStatistic {
     return std::sqrt(variance / (n - 1.0));
   }
   Estimate estimate() const { return {mean(), standardError()}; }
+  /// An accumulator holding exactly these sums (the state of one sent between processes).
+  static RunningStatistic restored(std::uint64_t count, double sum, double sumSquares) {
+    RunningStatistic s;
+    s.count_ = count;
+    s.sum_ = sum;
+    s.sumSquares_ = sumSquares;
+    return s;
+  }
 
  private:
   std::uint64_t count_ = 0;
@@ -101,6 +110,20 @@ class Histogram {
     packets_ += other.packets_;
   }
   std::uint64_t packets() const { return packets_; }
+  /// The raw state, bins then underflow and overflow (for sending between processes).
+  const std::vector<double>& sums() const { return sums_; }
+  const std::vector<double>& sumSquares() const { return sumSquares_; }
+  /// Replaces the state with one taken from sums()/sumSquares()/packets() of a histogram with
+  /// the same bins; throws std::invalid_argument when the sizes differ.
+  void restore(std::vector<double> sums, std::vector<double> sumSquares, std::uint64_t packets) {
+    if (sums.size() != sums_.size() || sumSquares.size() != sumSquares_.size())
+      throw std::invalid_argument("Histogram::restore: the state has " +
+                                  std::to_string(sums.size()) + " bins, this histogram " +
+                                  std::to_string(sums_.size()));
+    sums_ = std::move(sums);
+    sumSquares_ = std::move(sumSquares);
+    packets_ = packets;
+  }
   /// Per-packet mean score in `bin` (including underflowIndex()/overflowIndex()) and its error.
   Estimate estimate(std::size_t bin) const {
     if (packets_ < 2) return {packets_ == 0 ? 0.0 : sums_.at(bin), 0.0};

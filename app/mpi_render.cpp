@@ -1,0 +1,108 @@
+#include "app/mpi_render.h"
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "app/mpi_session.h"
+#include "renderer/image/film_output.h"
+
+namespace hylios {
+namespace {
+
+/// The film's state summed over the ranks (every rank's sums of its own tiles) into `whole` on
+/// rank 0 (may be `film` itself; ignored on the other ranks).
+void sumFilmOnRoot(const Film& film, Film* whole) {
+  std::vector<double> sums = film.sums(), oddSums = film.oddSums();
+  std::vector<std::uint32_t> counts = film.counts(), oddCounts = film.oddCounts();
+  sumToRoot(sums);
+  sumToRoot(oddSums);
+  sumToRoot(counts);
+  sumToRoot(oddCounts);
+  if (MpiSession::isRoot())
+    whole->restoreState(std::move(sums), std::move(counts), std::move(oddSums),
+                        std::move(oddCounts), film.samplesPerPixelDone());
+}
+
+template <class T>
+void put(std::string& bytes, const T& value) {
+  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+template <class T>
+T take(const std::string& bytes, std::size_t& offset) {
+  T value;
+  std::memcpy(&value, bytes.data() + offset, sizeof value);
+  offset += sizeof value;
+  return value;
+}
+
+std::string noiseBytes(const std::vector<GroupNoise>& noise) {
+  std::string bytes;
+  put(bytes, static_cast<std::uint64_t>(noise.size()));
+  for (const GroupNoise& g : noise) {
+    put(bytes, static_cast<std::uint64_t>(g.group.size()));
+    bytes += g.group;
+    put(bytes, g.medianRelative);
+    put(bytes, static_cast<std::uint64_t>(g.pixels));
+  }
+  return bytes;
+}
+
+std::vector<GroupNoise> noiseFromBytes(const std::string& bytes) {
+  std::size_t offset = 0;
+  std::vector<GroupNoise> noise(take<std::uint64_t>(bytes, offset));
+  for (GroupNoise& g : noise) {
+    const auto length = take<std::uint64_t>(bytes, offset);
+    g.group = bytes.substr(offset, length);
+    offset += length;
+    g.medianRelative = take<double>(bytes, offset);
+    g.pixels = take<std::uint64_t>(bytes, offset);
+  }
+  return noise;
+}
+
+}  // namespace
+
+RenderDivision renderDivisionAcrossRanks() {
+  RenderDivision division;
+  if (!MpiSession::distributed()) return division;
+  division.part = static_cast<std::size_t>(MpiSession::rank());
+  division.parts = static_cast<std::size_t>(MpiSession::size());
+  division.wholeFilmNoise = [](const Film& film) {
+    std::string bytes;
+    if (MpiSession::isRoot()) {
+      Film whole = film;
+      sumFilmOnRoot(film, &whole);
+      bytes = noiseBytes(filmNoise(whole));
+    } else {
+      sumFilmOnRoot(film, nullptr);
+    }
+    broadcastFromRoot(bytes);
+    return noiseFromBytes(bytes);
+  };
+  division.gather = [](Film& film, RenderStats& stats) {
+    sumFilmOnRoot(film, &film);
+    std::vector<std::uint64_t> counters = {stats.paths,
+                                           stats.skinWalks,
+                                           stats.skinAbsorbed,
+                                           stats.skinSurfaceExits,
+                                           stats.skinSubsurfaceExits,
+                                           stats.skinEventLimited,
+                                           stats.exitFallbacks,
+                                           stats.belowSurface};
+    sumToRoot(counters);
+    std::uint64_t* fields[] = {&stats.paths,
+                               &stats.skinWalks,
+                               &stats.skinAbsorbed,
+                               &stats.skinSurfaceExits,
+                               &stats.skinSubsurfaceExits,
+                               &stats.skinEventLimited,
+                               &stats.exitFallbacks,
+                               &stats.belowSurface};
+    for (std::size_t i = 0; i < counters.size(); ++i) *fields[i] = counters[i];
+  };
+  return division;
+}
+
+}  // namespace hylios
