@@ -17,39 +17,80 @@ std::uint32_t reverseBits(std::uint32_t v) {
   return (v >> 16) | (v << 16);
 }
 
-/// Direction numbers of dimension 1 as 32-bit fractions: column k of the generator matrix.
-constexpr std::array<std::uint32_t, 32> dimension1Directions() {
+constexpr std::uint32_t reverseBitsConstexpr(std::uint32_t v) {
+  std::uint32_t r = 0;
+  for (int k = 0; k < 32; ++k) r |= ((v >> k) & 1u) << (31 - k);
+  return r;
+}
+
+/// Dimension 1 per byte of the index: table[b][x] is the value of index x << 8b, bit-reversed when
+/// `reversed` (the scrambles work on reversed digits). Direction numbers as 32-bit fractions:
+/// v_0 = 2^31, v_k = v_(k−1) ⊕ (v_(k−1) >> 1).
+using ByteTables = std::array<std::array<std::uint32_t, 256>, 4>;
+constexpr ByteTables dimension1Tables(bool reversed) {
   std::array<std::uint32_t, 32> v{};
   v[0] = 1u << 31;
   for (std::size_t k = 1; k < v.size(); ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
-  return v;
+  ByteTables tables{};
+  for (std::size_t b = 0; b < 4; ++b)
+    for (std::uint32_t x = 0; x < 256; ++x) {
+      std::uint32_t value = 0;
+      for (std::size_t k = 0; k < 8; ++k)
+        if ((x >> k) & 1u) value ^= v[8 * b + k];
+      tables[b][x] = reversed ? reverseBitsConstexpr(value) : value;
+    }
+  return tables;
 }
-constexpr std::array<std::uint32_t, 32> kDimension1 = dimension1Directions();
+constexpr ByteTables kDimension1 = dimension1Tables(false);
+constexpr ByteTables kDimension1Reversed = dimension1Tables(true);
 
-}  // namespace
-
-std::uint32_t dimension0(std::uint32_t index) { return reverseBits(index); }
-
-std::uint32_t dimension1(std::uint32_t index) {
-  std::uint32_t value = 0;
-  for (std::size_t k = 0; index != 0; index >>= 1, ++k)
-    if (index & 1u) value ^= kDimension1[k];
-  return value;
+std::uint32_t lookup(const ByteTables& tables, std::uint32_t index) {
+  return tables[0][index & 0xffu] ^ tables[1][(index >> 8) & 0xffu] ^
+         tables[2][(index >> 16) & 0xffu] ^ tables[3][index >> 24];
 }
 
-std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
-  // With the digits reversed, digit k of the value is bit k, and a step that changes bit k only by
-  // a function of the bits below it (adding the seed, multiplying by an odd number, x ⊕= x·c with
-  // c even) changes digit k only by a function of the digits above it: a nested scramble. The
-  // steps and constants are the hash of Vegdahl's "Building a better LK hash" (2021), the one
-  // pbrt-v4's FastOwenScrambler uses; the test checks the net property it must keep.
-  std::uint32_t x = reverseBits(value);
+/// owenScramble in the reversed domain: owenScramble(v, s) = reverseBits(nestedHash(
+/// reverseBits(v), s)). With the digits reversed, digit k of the value is bit k, and a step that
+/// changes bit k only by a function of the bits below it (adding the seed, multiplying by an odd
+/// number, x ⊕= x·c with c even) changes digit k only by a function of the digits above it: a
+/// nested scramble. The steps and constants are the hash of Vegdahl's "Building a better LK hash"
+/// (2021), the one pbrt-v4's FastOwenScrambler uses; the tests check the net property it keeps.
+std::uint32_t nestedHash(std::uint32_t x, std::uint32_t seed) {
   x ^= x * 0x3d20adeau;
   x += seed;
   x *= (seed >> 16) | 1u;
   x ^= x * 0x05526c56u;
   x ^= x * 0x53a22864u;
-  return reverseBits(x);
+  return x;
+}
+
+}  // namespace
+
+std::uint32_t dimension0(std::uint32_t index) { return reverseBits(index); }
+
+std::uint32_t dimension1(std::uint32_t index) { return lookup(kDimension1, index); }
+
+std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
+  return reverseBits(nestedHash(reverseBits(value), seed));
+}
+
+// The padded requests with the reversals that cancel left out: for the shuffled index
+// j = owenScramble(i, s1), dimension0(j) = reverseBits(j) = nestedHash(reverseBits(i), s1) = t, so
+//   1-D:  owenScramble(t, s2) = reverseBits(nestedHash(reverseBits(t), s2)),
+//   2-D:  x = owenScramble(t, s2) = reverseBits(nestedHash(j, s2)),
+//         y = owenScramble(dimension1(j), s3) = reverseBits(nestedHash(reversed dimension1(j),
+//         s3)).
+std::uint32_t scrambledRadicalInverse(std::uint32_t reversedIndex, std::uint32_t shuffleSeed,
+                                      std::uint32_t seed) {
+  return reverseBits(nestedHash(reverseBits(nestedHash(reversedIndex, shuffleSeed)), seed));
+}
+
+std::array<std::uint32_t, 2> scrambledSobol2D(std::uint32_t reversedIndex,
+                                              std::uint32_t shuffleSeed, std::uint32_t seedX,
+                                              std::uint32_t seedY) {
+  const std::uint32_t j = reverseBits(nestedHash(reversedIndex, shuffleSeed));
+  return {reverseBits(nestedHash(j, seedX)),
+          reverseBits(nestedHash(lookup(kDimension1Reversed, j), seedY))};
 }
 
 }  // namespace sobol
@@ -74,9 +115,8 @@ double SampleStream::get1D() {
   }
   const std::uint64_t h = skin::mix64(scrambleSeed_ + (dimension_ + 1) * kGolden);
   ++dimension_;
-  const std::uint32_t shuffled = sobol::owenScramble(index_, static_cast<std::uint32_t>(h));
-  return unit(
-      sobol::owenScramble(sobol::dimension0(shuffled), static_cast<std::uint32_t>(h >> 32)));
+  return unit(sobol::scrambledRadicalInverse(reversedIndex_, static_cast<std::uint32_t>(h),
+                                             static_cast<std::uint32_t>(h >> 32)));
 }
 
 std::array<double, 2> SampleStream::get2D() {
@@ -88,15 +128,15 @@ std::array<double, 2> SampleStream::get2D() {
   const std::uint64_t h = skin::mix64(scrambleSeed_ + (dimension_ + 1) * kGolden);
   const std::uint64_t g = skin::mix64(h);
   dimension_ += 2;
-  const std::uint32_t shuffled = sobol::owenScramble(index_, static_cast<std::uint32_t>(h));
-  return {
-      unit(sobol::owenScramble(sobol::dimension0(shuffled), static_cast<std::uint32_t>(h >> 32))),
-      unit(sobol::owenScramble(sobol::dimension1(shuffled), static_cast<std::uint32_t>(g)))};
+  const std::array<std::uint32_t, 2> point =
+      sobol::scrambledSobol2D(reversedIndex_, static_cast<std::uint32_t>(h),
+                              static_cast<std::uint32_t>(h >> 32), static_cast<std::uint32_t>(g));
+  return {unit(point[0]), unit(point[1])};
 }
 
 SampleStream SampleStream::branch() const {
   if (!sobol_) return SampleStream(*rng_);
-  return SampleStream(*rng_, skin::mix64(scrambleSeed_ ^ kBranchSalt), index_);
+  return SampleStream(*rng_, skin::mix64(scrambleSeed_ ^ kBranchSalt), index());
 }
 
 PixelSampler::PixelSampler(SamplerKind kind, std::uint64_t seed, std::uint64_t strata)

@@ -47,6 +47,15 @@ std::uint32_t dimension1(std::uint32_t index);
 /// k is flipped or not by a hash of `seed` and the k digits above it. Bijective; maps every aligned
 /// block of 2^m values onto an aligned block of 2^m, so it keeps (t,m,s)-nets nets.
 std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed);
+/// owenScramble(dimension0(owenScramble(i, shuffleSeed)), seed) for reversedIndex =
+/// dimension0(i): point i of a shuffled, scrambled van der Corput sequence.
+std::uint32_t scrambledRadicalInverse(std::uint32_t reversedIndex, std::uint32_t shuffleSeed,
+                                      std::uint32_t seed);
+/// The same for dimensions 0 and 1 with one shuffle: owenScramble(dimension0(j), seedX) and
+/// owenScramble(dimension1(j), seedY) for j = owenScramble(i, shuffleSeed).
+std::array<std::uint32_t, 2> scrambledSobol2D(std::uint32_t reversedIndex,
+                                              std::uint32_t shuffleSeed, std::uint32_t seedX,
+                                              std::uint32_t seedY);
 }  // namespace sobol
 
 /// Low-discrepancy dimensions per camera path (sobol): the camera sample (5) and the light sample
@@ -61,7 +70,10 @@ class SampleStream {
   /// Point `index` of the scrambled Sobol' sequence whose scrambles derive from `scrambleSeed`;
   /// dimensions past kLowDiscrepancyDimensions from `rng`.
   SampleStream(skin::Rng& rng, std::uint64_t scrambleSeed, std::uint32_t index)
-      : rng_(&rng), scrambleSeed_(scrambleSeed), index_(index), sobol_(true) {}
+      : rng_(&rng),
+        scrambleSeed_(scrambleSeed),
+        reversedIndex_(sobol::dimension0(index)),
+        sobol_(true) {}
 
   /// One number in [0, 1).
   double get1D();
@@ -80,7 +92,8 @@ class SampleStream {
  private:
   skin::Rng* rng_;
   std::uint64_t scrambleSeed_ = 0;
-  std::uint32_t index_ = 0;
+  std::uint32_t index() const { return sobol::dimension0(reversedIndex_); }
+  std::uint32_t reversedIndex_ = 0;  ///< the point's index, bit-reversed (the scrambles use it)
   std::uint32_t dimension_ = 0;
   bool sobol_ = false;
 };

@@ -157,6 +157,23 @@ TEST(Sobol, OwenScrambleIsNestedAndBijective) {
   EXPECT_NEAR(flips / 20000.0, 0.5, 4 * 0.0035);
 }
 
+TEST(Sobol, FastRequestsEqualTheCompositionOfScrambleShuffleAndDimension) {
+  skin::Rng rng(4);
+  for (int trial = 0; trial < 10000; ++trial) {
+    const auto i = static_cast<std::uint32_t>(rng.nextU64() >> (trial % 33 + 31));
+    const auto s1 = static_cast<std::uint32_t>(rng.nextU64()),
+               s2 = static_cast<std::uint32_t>(rng.nextU64()),
+               s3 = static_cast<std::uint32_t>(rng.nextU64());
+    const std::uint32_t j = sobol::owenScramble(i, s1);
+    ASSERT_EQ(sobol::scrambledRadicalInverse(sobol::dimension0(i), s1, s2),
+              sobol::owenScramble(sobol::dimension0(j), s2));
+    const std::array<std::uint32_t, 2> p =
+        sobol::scrambledSobol2D(sobol::dimension0(i), s1, s2, s3);
+    ASSERT_EQ(p[0], sobol::owenScramble(sobol::dimension0(j), s2));
+    ASSERT_EQ(p[1], sobol::owenScramble(sobol::dimension1(j), s3));
+  }
+}
+
 TEST(PixelSampler, EachHalfOfAPixelsSamplesIsStratifiedInEveryRequestAtEveryPowerOfTwo) {
   const PixelSampler sampler(SamplerKind::Sobol, 11, 1);
   constexpr int kLog2 = 10;
