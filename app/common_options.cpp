@@ -11,6 +11,12 @@ CLI::Option* addRaysOption(CLI::App& command, std::uint64_t& rays, const std::st
       ->capture_default_str();
 }
 
+CLI::Option* addWavelengthOption(CLI::App& command, double& wavelengthNm) {
+  return command.add_option("--wavelength", wavelengthNm, "Wavelength, nm")
+      ->check(finiteRange(0, 1e6))
+      ->capture_default_str();
+}
+
 CLI::Option* addAngleOption(CLI::App& command, double& angleDeg) {
   return command
       .add_option("--angle", angleDeg, "Incidence angle from the normal, degrees [0, 90)")

@@ -1,5 +1,5 @@
-// Options several commands share, each written once with its check: --rays, --angle, --seed,
-// --threads.
+// Options several commands share, each written once with its check: --rays, --wavelength,
+// --angle, --seed, --threads.
 // (--estimator: app/estimator_option.h; --skin-model and other enum choices: app/enum_option.h.)
 #pragma once
 #include <CLI/CLI.hpp>
@@ -16,6 +16,8 @@ inline constexpr const char* kSeedHelp =
 /// Adds --rays N, a decimal integer in [min, max] (default shown).
 CLI::Option* addRaysOption(CLI::App& command, std::uint64_t& rays, const std::string& help,
                            std::uint64_t min = 1, std::uint64_t max = std::uint64_t{1} << 40);
+/// Adds --wavelength NM, one wavelength in nm (default shown).
+CLI::Option* addWavelengthOption(CLI::App& command, double& wavelengthNm);
 /// Adds --angle DEG, the incidence angle from the normal in [0, 90) (default shown).
 CLI::Option* addAngleOption(CLI::App& command, double& angleDeg);
 /// Adds --seed K in [0, 2^63-1] (option_checks.h: seedRange).

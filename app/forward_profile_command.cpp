@@ -122,9 +122,7 @@ void registerForwardProfileCommand(CLI::App& app) {
                                          "Angular profile of light transmitted through the "
                                          "epidermis at normal incidence (paper Fig. 8)");
   addWalkStudyOptions(*command, args->study, "Rays");
-  command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
-      ->check(finiteRange(0, 1e6))
-      ->capture_default_str();
+  addWavelengthOption(*command, args->wavelengthNm);
   command
       ->add_option("--polar-bins", args->polarBins,
                    "Bins of the angle from the inward normal over [0°, 90°]")

@@ -97,9 +97,7 @@ void registerRadialProfileCommand(CLI::App& app) {
                                          "Subsurface reflectance per unit area vs distance from "
                                          "the entry point, R(r) in cm⁻² (BSSRDF)");
   addWalkStudyOptions(*command, args->study, "Rays");
-  command->add_option("--wavelength", args->wavelengthNm, "Wavelength, nm")
-      ->check(finiteRange(0, 1e6))
-      ->capture_default_str();
+  addWavelengthOption(*command, args->wavelengthNm);
   addAngleOption(*command, args->angleDeg);
   command
       ->add_option("--max-radius-cm", args->maxRadiusCm,

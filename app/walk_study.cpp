@@ -46,11 +46,7 @@ std::vector<skin::SkinOptics> WalkStudy::optics(const std::vector<double>& wavel
 }
 
 skin::WalkRunOptions WalkStudy::run(double incidenceDeg) const {
-  skin::WalkRunOptions run;
-  run.incidenceDeg = incidenceDeg;
-  run.rays = options_.rays;
-  run.seed = options_.seed;
-  return run;
+  return skin::WalkRunOptions{incidenceDeg, options_.rays, options_.seed};
 }
 
 }  // namespace hylios

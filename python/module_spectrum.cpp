@@ -58,10 +58,7 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
         std::unique_ptr<ProgressBar> bar;
         if (progress) bar = std::make_unique<ProgressBar>("spectrum " + s.specimen.name, n);
         if (spectral) {
-          skin::WalkRunOptions run;
-          run.incidenceDeg = angleDeg;
-          run.rays = rays;
-          run.seed = seed;
+          skin::WalkRunOptions run{angleDeg, rays, seed};
           tallies = simulateTallies(skin::Estimator::Spectral, optics, run, stop, bar.get());
         } else {
           tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
