@@ -83,36 +83,18 @@ void mcmlThreeLayerSlab(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * run.photons));
 }
 
+/// The wavelengths (nm) of the walk benchmarks, timed in ms of process CPU time.
+void atWalkWavelengths(benchmark::internal::Benchmark* b) {
+  for (int nm : {365, 550, 1100, 1650}) b->Arg(nm);
+  b->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+}
+
 }  // namespace
 
-BENCHMARK_CAPTURE(skinWalk, S1, std::string("S1"))
-    ->Arg(365)
-    ->Arg(550)
-    ->Arg(1100)
-    ->Arg(1650)
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime();
-BENCHMARK_CAPTURE(skinWalk, S4, std::string("S4"))
-    ->Arg(365)
-    ->Arg(550)
-    ->Arg(1100)
-    ->Arg(1650)
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime();
-BENCHMARK_CAPTURE(skinWalkTabulated, S1, std::string("S1"))
-    ->Arg(365)
-    ->Arg(550)
-    ->Arg(1100)
-    ->Arg(1650)
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime();
-BENCHMARK_CAPTURE(skinWalkTabulated, S4, std::string("S4"))
-    ->Arg(365)
-    ->Arg(550)
-    ->Arg(1100)
-    ->Arg(1650)
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(skinWalk, S1, std::string("S1"))->Apply(atWalkWavelengths);
+BENCHMARK_CAPTURE(skinWalk, S4, std::string("S4"))->Apply(atWalkWavelengths);
+BENCHMARK_CAPTURE(skinWalkTabulated, S1, std::string("S1"))->Apply(atWalkWavelengths);
+BENCHMARK_CAPTURE(skinWalkTabulated, S4, std::string("S4"))->Apply(atWalkWavelengths);
 BENCHMARK(mcmlThreeLayerSlab)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 BENCHMARK_MAIN();
