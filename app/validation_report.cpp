@@ -1,5 +1,6 @@
 #include "app/validation_report.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -76,6 +77,26 @@ PlotSeries cutSeries(const std::string& title, const skin::InPlaneCut& cut,
     s.yError.push_back(2 * e.standardError);
   }
   return s;
+}
+
+/// Two panels of in-plane cuts (surface, subsurface, total per sr ± 2σ), one per distribution,
+/// side by side in one PNG; `names` are the three series' names.
+void plotInPlaneCuts(const std::filesystem::path& png, const std::string& title,
+                     const std::array<const skin::ReflectionDistribution*, 2>& distributions,
+                     const std::array<std::string, 2>& panelTitles, const std::string& yLabel,
+                     const std::array<std::string, 3>& names) {
+  std::vector<PlotPanel> panels;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const skin::InPlaneCut& c = distributions[i]->inPlanePerSteradian;
+    panels.push_back({panelTitles[i],
+                      "signed reflection angle (°): < 0 toward the source",
+                      yLabel,
+                      false,
+                      {cutSeries(names[0] + " ± 2σ", c, c.surface, "lines lw 1 dt 2"),
+                       cutSeries(names[1] + " ± 2σ", c, c.subsurface, "lines lw 1 dt 3"),
+                       cutSeries(names[2] + " ± 2σ", c, c.total, "linespoints lw 2 pt 7 ps 0.5")}});
+  }
+  plotPanels(png, title, panels, 2, 1400, 600);
 }
 
 struct Check {
@@ -278,23 +299,12 @@ std::string runValidation(const ValidationOptions& options) {
          "no measured value in the project", "—"});
   }
   std::cout << "validate: Fig. 10 (visible BRDF) " << fmt("%.1f", seconds(t0)) << " s\n";
-  if (options.plots) {
-    std::vector<PlotPanel> panels;
-    for (const auto* dist : {&at0, &at60}) {
-      const auto& c = dist->inPlanePerSteradian;
-      panels.push_back({dist == &at0 ? "incidence 0°" : "incidence 60°",
-                        "signed reflection angle (°): < 0 toward the source",
-                        "BRDF·cos θr (per sr), 380–780 nm mean",
-                        false,
-                        {cutSeries("surface ± 2σ", c, c.surface, "lines lw 1 dt 2"),
-                         cutSeries("subsurface ± 2σ", c, c.subsurface, "lines lw 1 dt 3"),
-                         cutSeries("total ± 2σ", c, c.total, "linespoints lw 2 pt 7 ps 0.5")}});
-    }
-    plotPanels(images / "fig10_brdf.png",
-               "Paper Fig. 10: S1 visible BRDF in the plane of incidence (no measured data in the "
-               "project)",
-               panels, 2, 1400, 600);
-  }
+  if (options.plots)
+    plotInPlaneCuts(images / "fig10_brdf.png",
+                    "Paper Fig. 10: S1 visible BRDF in the plane of incidence (no measured data in "
+                    "the project)",
+                    {&at0, &at60}, {"incidence 0°", "incidence 60°"},
+                    "BRDF·cos θr (per sr), 380–780 nm mean", {"surface", "subsurface", "total"});
 
   // ---- Fig. 11: S1 at 45°, 365 vs 1100 nm ----
   t0 = std::chrono::steady_clock::now();
@@ -318,23 +328,12 @@ std::string runValidation(const ValidationOptions& options) {
                       checkMark(pIr < pUv)});
   }
   std::cout << "validate: Fig. 11 (365 / 1100 nm) " << fmt("%.1f", seconds(t0)) << " s\n";
-  if (options.plots) {
-    std::vector<PlotPanel> panels;
-    for (const auto* dist : {&uv, &ir}) {
-      const auto& c = dist->inPlanePerSteradian;
-      panels.push_back({dist == &uv ? "365 nm" : "1100 nm",
-                        "signed reflection angle (°): < 0 toward the source",
-                        "BRDF·cos θr (per sr)",
-                        false,
-                        {cutSeries("R_s ± 2σ", c, c.surface, "lines lw 1 dt 2"),
-                         cutSeries("R_d ± 2σ", c, c.subsurface, "lines lw 1 dt 3"),
-                         cutSeries("R_t ± 2σ", c, c.total, "linespoints lw 2 pt 7 ps 0.5")}});
-    }
-    plotPanels(images / "fig11_uv_ir.png",
-               "Paper Fig. 11: S1 at 45°, UV vs IR in the plane of incidence (no measured data in "
-               "the project)",
-               panels, 2, 1400, 600);
-  }
+  if (options.plots)
+    plotInPlaneCuts(
+        images / "fig11_uv_ir.png",
+        "Paper Fig. 11: S1 at 45°, UV vs IR in the plane of incidence (no measured data "
+        "in the project)",
+        {&uv, &ir}, {"365 nm", "1100 nm"}, "BRDF·cos θr (per sr)", {"R_s", "R_d", "R_t"});
 
   // ---- S2 fitted to object 113 (hylios fit), next to Table 1 ----
   t0 = std::chrono::steady_clock::now();
