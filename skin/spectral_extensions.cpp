@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <initializer_list>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "skin/spectral_database.h"
 
@@ -104,49 +106,46 @@ void requireOrdered(double low, double high, const char* what, const std::filesy
     throw SpectralDataError(fmt::format("{}: {} needs {} < {}", file.string(), what, low, high));
 }
 
+/// Reads section `section`: each key, a positive number, into its field, in order; no other key.
+void readPositives(const toml::table& root, const char* section, const std::filesystem::path& file,
+                   std::initializer_list<std::pair<const char*, double*>> fields) {
+  SectionReader reader(root, section, file);
+  for (const auto& [key, field] : fields) *field = reader.positive(key);
+  reader.rejectUnknownKeys();
+}
+
 /// Reads every section of a parsed extensions document; `tomlFile` names it in messages.
 SpectralExtensions readExtensions(const toml::table& root, const std::filesystem::path& tomlFile) {
   rejectUnknownSections(root, tomlFile);
   SpectralExtensions x;
 
-  SectionReader domain(root, "domain", tomlFile);
-  x.domainMinNm = domain.positive("min_nm");
-  x.domainMaxNm = domain.positive("max_nm");
-  domain.rejectUnknownKeys();
+  readPositives(root, "domain", tomlFile, {{"min_nm", &x.domainMinNm}, {"max_nm", &x.domainMaxNm}});
   requireOrdered(x.domainMinNm, x.domainMaxNm, "[domain]", tomlFile);
 
-  SectionReader melanin(root, "melanin", tomlFile);
-  x.eumelaninFitMinNm = melanin.positive("eumelanin_fit_min_nm");
-  x.pheomelaninFitMinNm = melanin.positive("pheomelanin_fit_min_nm");
-  melanin.rejectUnknownKeys();
+  readPositives(root, "melanin", tomlFile,
+                {{"eumelanin_fit_min_nm", &x.eumelaninFitMinNm},
+                 {"pheomelanin_fit_min_nm", &x.pheomelaninFitMinNm}});
 
-  SectionReader hb(root, "hemoglobin", tomlFile);
-  x.prahlHemoglobinMolarMass = hb.positive("prahl_molar_mass_g_per_mol");
-  x.zijlstraHemoglobinMolarMass = hb.positive("zijlstra_molar_mass_g_per_mol");
-  x.hemoglobinFloorMinNm = hb.positive("floor_min_nm");
-  x.hemoglobinFloorMaxNm = hb.positive("floor_max_nm");
-  x.bloodWaterVolumeFraction = hb.positive("blood_water_volume_fraction");
-  x.bloodHemoglobinMgPerMl = hb.positive("blood_hemoglobin_mg_per_ml");
-  x.hemoglobinDecayLengthNm = hb.positive("decay_length_nm");
-  hb.rejectUnknownKeys();
+  readPositives(root, "hemoglobin", tomlFile,
+                {{"prahl_molar_mass_g_per_mol", &x.prahlHemoglobinMolarMass},
+                 {"zijlstra_molar_mass_g_per_mol", &x.zijlstraHemoglobinMolarMass},
+                 {"floor_min_nm", &x.hemoglobinFloorMinNm},
+                 {"floor_max_nm", &x.hemoglobinFloorMaxNm},
+                 {"blood_water_volume_fraction", &x.bloodWaterVolumeFraction},
+                 {"blood_hemoglobin_mg_per_ml", &x.bloodHemoglobinMgPerMl},
+                 {"decay_length_nm", &x.hemoglobinDecayLengthNm}});
   requireOrdered(x.hemoglobinFloorMinNm, x.hemoglobinFloorMaxNm, "[hemoglobin] floor range",
                  tomlFile);
   requireOrdered(x.bloodWaterVolumeFraction, 1.0, "[hemoglobin] blood_water_volume_fraction",
                  tomlFile);
 
-  SectionReader lipid(root, "lipid", tomlFile);
-  x.cornOilFirstValidNm = lipid.positive("corn_oil_first_valid_nm");
-  lipid.rejectUnknownKeys();
-
-  SectionReader bilirubin(root, "bilirubin", tomlFile);
-  x.bilirubinMolarMass = bilirubin.positive("molar_mass_g_per_mol");
-  x.bilirubinZeroFromNm = bilirubin.positive("zero_from_nm");
-  bilirubin.rejectUnknownKeys();
-
-  SectionReader carotene(root, "beta_carotene", tomlFile);
-  x.betaCaroteneMolarMass = carotene.positive("molar_mass_g_per_mol");
-  x.betaCaroteneZeroFromNm = carotene.positive("zero_from_nm");
-  carotene.rejectUnknownKeys();
+  readPositives(root, "lipid", tomlFile, {{"corn_oil_first_valid_nm", &x.cornOilFirstValidNm}});
+  readPositives(
+      root, "bilirubin", tomlFile,
+      {{"molar_mass_g_per_mol", &x.bilirubinMolarMass}, {"zero_from_nm", &x.bilirubinZeroFromNm}});
+  readPositives(root, "beta_carotene", tomlFile,
+                {{"molar_mass_g_per_mol", &x.betaCaroteneMolarMass},
+                 {"zero_from_nm", &x.betaCaroteneZeroFromNm}});
 
   x.keratin = SectionReader(root, "band.keratin", tomlFile).band();
   x.dna = SectionReader(root, "band.dna", tomlFile).band();
