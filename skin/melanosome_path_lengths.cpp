@@ -54,6 +54,7 @@ MelanosomePathLengths::MelanosomePathLengths(double aspect, double indexRatio,
     if (end == MelanosomeWalkEnd::ReflectedAtEntry) ++reflectedAtEntry_;
     length = sum;
   }
+  singleLengths_.assign(lengths_.begin(), lengths_.end());
 }
 
 double MelanosomePathLengths::absorptionProbability(double muA_perMinorAxis) const {

@@ -218,7 +218,7 @@ void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
   double chordsOverA = 0;
   for (unsigned i = 0; i < count; ++i) {
     if (m.table) {
-      const std::vector<double>& lengths = m.table->pathLengths();
+      const std::vector<float>& lengths = m.table->pathLengthsSingle();
       const auto pick =
           static_cast<std::size_t>(rng.uniform() * static_cast<double>(lengths.size()));
       chordsOverA += lengths[std::min(pick, lengths.size() - 1)];
