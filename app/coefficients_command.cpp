@@ -24,6 +24,7 @@
 #include "app/wavelength_list.h"
 #include "renderer/scene/data_paths.h"
 #include "skin/core/atomic_file.h"
+#include "skin/core/enum_names.h"
 #include "skin/skin_optics.h"
 #include "skin/specimen.h"
 #include "skin/spectral_database.h"
@@ -90,15 +91,11 @@ std::string csvRows(const skin::SkinOptics& optics) {
 }
 
 std::string unitLabel(skin::ConcentrationUnit unit) {
-  switch (unit) {
-    case skin::ConcentrationUnit::VolumeFraction:
-      return "per volume fraction";
-    case skin::ConcentrationUnit::MassConcentration:
-      return "per mg/mL";
-    case skin::ConcentrationUnit::MolarConcentration:
-      return "per mol/L";
-  }
-  return "";
+  static constexpr EnumNames<skin::ConcentrationUnit, 3> kLabels{
+      {{skin::ConcentrationUnit::VolumeFraction, "per volume fraction"},
+       {skin::ConcentrationUnit::MassConcentration, "per mg/mL"},
+       {skin::ConcentrationUnit::MolarConcentration, "per mol/L"}}};
+  return std::string(enumName(unit, kLabels));
 }
 
 /// "stratum_corneum" -> "stratum corneum" (gnuplot's enhanced text reads '_' as a subscript).

@@ -1,5 +1,7 @@
 #include "skin/core/toml_location.h"
 
+#include "skin/core/enum_names.h"
+
 namespace hylios::skin {
 
 SourceLocation tomlSourceLocation(const std::string& source, const toml::source_region& region) {
@@ -14,28 +16,18 @@ std::string tomlLocation(const std::string& source, const toml::source_region& r
 }
 
 std::string_view tomlTypeName(toml::node_type type) {
-  switch (type) {
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a floating-point number";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::date:
-      return "a date";
-    case toml::node_type::time:
-      return "a time";
-    case toml::node_type::date_time:
-      return "a date-time";
-    default:
-      return "nothing";
-  }
+  static constexpr EnumNames<toml::node_type, 9> kNames{
+      {{toml::node_type::table, "a table"},
+       {toml::node_type::array, "an array"},
+       {toml::node_type::string, "a string"},
+       {toml::node_type::integer, "an integer"},
+       {toml::node_type::floating_point, "a floating-point number"},
+       {toml::node_type::boolean, "a boolean"},
+       {toml::node_type::date, "a date"},
+       {toml::node_type::time, "a time"},
+       {toml::node_type::date_time, "a date-time"}}};
+  const std::string_view name = enumName(type, kNames);
+  return name.empty() ? "nothing" : name;
 }
 
 }  // namespace hylios::skin
