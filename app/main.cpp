@@ -26,6 +26,19 @@ int main(int argc, char** argv) {
   hylios::registerFitCommand(app);
   hylios::registerValidateCommand(app);
   hylios::registerSweepCommand(app);
+  // Under MPI only the commands that divide their work run; the others would compute the same
+  // thing on every rank (docs/cluster.md).
+  auto isCommand = [&app](const char* name) {
+    for (const CLI::App* command : app.get_subcommands({}))
+      if (command->get_name() == name) return true;
+    return false;
+  };
+  if (hylios::MpiSession::distributed() && argc > 1 && isCommand(argv[1]) &&
+      !hylios::MpiSession::dividesWork(argv[1]))
+    return hylios::MpiSession::failCommand(
+        std::string("'hylios ") + argv[1] +
+        "' does not divide its work among MPI ranks; run it as one process, without "
+        "mpirun/srun (spectrum, render and sweep do, docs/cluster.md)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -120,6 +120,10 @@ bool MpiSession::available() {
 #endif
 }
 
+bool MpiSession::dividesWork(const std::string& name) {
+  return name == "spectrum" || name == "render" || name == "sweep";
+}
+
 int MpiSession::failCommand(const std::string& message, double waitSeconds) {
   if (!distributed()) {
     std::cerr << "hylios: error: " << message << "\n";
