@@ -17,12 +17,7 @@ using hylios::kPi;
 namespace hylios {
 namespace {
 
-using test::columnOf;
-using test::readCsv;
-
-void runBrdf(const std::string& arguments) {
-  test::runCommandLine(registerBrdfCommand, "brdf " + arguments);
-}
+const test::CommandRunner runBrdf(registerBrdfCommand, "brdf");
 
 TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
   const test::ScratchOutputs outputs("brdf-test");
@@ -30,7 +25,7 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
       "--specimen S1 --angle 45 --wavelengths 550 --rays 3000 --seed 5 --polar-bins 6 "
       "--azimuth-bins 4" +
       outputs.options());
-  const auto rows = readCsv(outputs.csv);
+  const auto rows = test::readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 6 * 4);
   const auto& header = rows[0];
   ASSERT_EQ(header.size(), 17u);
@@ -39,9 +34,9 @@ TEST(BrdfCommand, OneRowPerBinAddingUpToTheReflectance) {
   EXPECT_EQ(header[5], "surface_per_sr");
   EXPECT_EQ(header[10], "total_per_sr_stderr");
   EXPECT_EQ(header[16], "total_brdf_stderr");
-  const std::size_t omega = columnOf(header, "solid_angle_sr"),
-                    total = columnOf(header, "total_per_sr"),
-                    surface = columnOf(header, "surface_per_sr");
+  const std::size_t omega = test::columnOf(header, "solid_angle_sr"),
+                    total = test::columnOf(header, "total_per_sr"),
+                    surface = test::columnOf(header, "surface_per_sr");
   double reflectance = 0, surfaceReflectance = 0, solidAngle = 0;
   for (std::size_t r = 1; r < rows.size(); ++r) {
     ASSERT_EQ(rows[r].size(), header.size()) << "row " << r;
@@ -71,7 +66,7 @@ TEST(BrdfCommand, SameOutputAtAnyThreadCountAndVisibleHasEveryBin) {
   EXPECT_EQ(test::readBytes(one), test::readBytes(two));
   const auto visible = scratch.path / "visible.csv";
   runBrdf("--visible --rays 100 --polar-bins 2 --azimuth-bins 3 --out " + visible.string());
-  EXPECT_EQ(readCsv(visible).size(), 1u + 2 * 3);
+  EXPECT_EQ(test::readCsv(visible).size(), 1u + 2 * 3);
 }
 
 TEST(BrdfCommand, BadArgumentsAreClearErrors) {

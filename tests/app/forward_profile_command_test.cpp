@@ -13,17 +13,12 @@
 namespace hylios {
 namespace {
 
-using test::columnOf;
-using test::readCsv;
-
-void runProfile(const std::string& arguments) {
-  test::runCommandLine(registerForwardProfileCommand, "forward-profile " + arguments);
-}
+const test::CommandRunner runProfile(registerForwardProfileCommand, "forward-profile");
 
 TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
   const test::ScratchOutputs outputs("forward-profile-test");
   runProfile("--wavelength 400 --rays 4000 --seed 3 --polar-bins 9" + outputs.options());
-  const auto rows = readCsv(outputs.csv);
+  const auto rows = test::readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 9);
   const auto& header = rows[0];
   ASSERT_EQ(header.size(), 7u);
@@ -31,12 +26,12 @@ TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
   EXPECT_EQ(header[3], "transmitted_per_sr");
   EXPECT_EQ(header[5], "relative_to_normal");
   EXPECT_EQ(header[6], "relative_to_normal_stderr");
-  EXPECT_EQ(std::stod(rows[1][columnOf(header, "relative_to_normal")]), 1.0);
+  EXPECT_EQ(std::stod(rows[1][test::columnOf(header, "relative_to_normal")]), 1.0);
   double transmitted = 0;
   for (std::size_t r = 1; r < rows.size(); ++r) {
     ASSERT_EQ(rows[r].size(), header.size());
-    transmitted += std::stod(rows[r][columnOf(header, "transmitted_per_sr")]) *
-                   std::stod(rows[r][columnOf(header, "solid_angle_sr")]);
+    transmitted += std::stod(rows[r][test::columnOf(header, "transmitted_per_sr")]) *
+                   std::stod(rows[r][test::columnOf(header, "solid_angle_sr")]);
   }
   // The same walk: S2 (the default), epidermis only, bottom index matched to the stratum basale.
   const skin::SkinOptics optics = test::specimenOptics("S2", 400);

@@ -15,18 +15,13 @@ using hylios::kPi;
 namespace hylios {
 namespace {
 
-using test::columnOf;
-using test::readCsv;
-
-void runProfile(const std::string& arguments) {
-  test::runCommandLine(registerRadialProfileCommand, "radial-profile " + arguments);
-}
+const test::CommandRunner runProfile(registerRadialProfileCommand, "radial-profile");
 
 TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
   const test::ScratchOutputs outputs("radial-profile-test");
   runProfile("--specimen S1 --wavelength 550 --rays 3000 --seed 2 --max-radius-cm 2 --bins 20" +
              outputs.options());
-  const auto rows = readCsv(outputs.csv);
+  const auto rows = test::readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 20);
   const auto& header = rows[0];
   ASSERT_EQ(header.size(), 7u);
@@ -40,7 +35,7 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
     EXPECT_NEAR(inner, 0.1 * static_cast<double>(r - 1), 1e-9);
     EXPECT_NEAR(std::stod(rows[r][2]), kPi * (outer * outer - inner * inner), 1e-5 * outer * outer);
     subsurface +=
-        std::stod(rows[r][columnOf(header, "reflectance_per_cm2")]) * std::stod(rows[r][2]);
+        std::stod(rows[r][test::columnOf(header, "reflectance_per_cm2")]) * std::stod(rows[r][2]);
   }
   skin::WalkRunOptions run;
   run.rays = 3000;

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 namespace hylios::test {
@@ -62,6 +63,19 @@ inline void runCommandLine(const std::function<void(CLI::App&)>& registerCommand
   registerCommand(app);
   app.parse(commandLine, false);
 }
+
+/// runCommandLine bound to one command: `run("arguments…")` parses "name arguments…".
+struct CommandRunner {
+  CommandRunner(std::function<void(CLI::App&)> registerCommand, std::string name)
+      : registerCommand_(std::move(registerCommand)), name_(std::move(name)) {}
+  void operator()(const std::string& arguments) const {
+    runCommandLine(registerCommand_, name_ + " " + arguments);
+  }
+
+ private:
+  std::function<void(CLI::App&)> registerCommand_;
+  std::string name_;
+};
 
 /// Index of `name` in a CSV header row, or the row's size when missing.
 inline std::size_t columnOf(const std::vector<std::string>& header, const std::string& name) {
