@@ -17,6 +17,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "tests/support/file_bytes.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -28,9 +30,18 @@ struct ChildResult {
   bool signalled = false;
 };
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+using hylios::test::readBytes;
+
+/// The scene both tests render.
+const std::string kTestScene =
+    (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
+
+/// `name` under the build folder, emptied (removed and made again).
+fs::path freshFolder(const std::string& name) {
+  const fs::path folder = fs::path(HYLIOS_BINARY_DIR) / name;
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
 }
 
 /// Runs hylios with `args`; when `signal` is non-zero, sends it once stdout has a line containing
@@ -107,13 +118,10 @@ Exr readExr(const fs::path& path) {
 }  // namespace
 
 TEST(RenderInterrupt, SignalsSaveACheckpointAndResumeGivesTheUninterruptedImage) {
-  const fs::path folder = fs::path(HYLIOS_BINARY_DIR) / "render_interrupt_test";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const fs::path folder = freshFolder("render_interrupt_test");
   ASSERT_TRUE(fs::exists(fs::path(HYLIOS_BINARY_DIR) / "hylios"))
       << "build the hylios target first";
-  const std::string scene =
-      (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
+  const std::string scene = kTestScene;
   // ~0.5 s of rendering on two cores; the first pass (1 spp) is reported after ~1/64 of it, so the
   // signal arrives long before the end.
   const std::vector<std::string> common = {"render",       scene,   "--spp",  "64",
@@ -188,13 +196,10 @@ TEST(RenderInterrupt, SignalsSaveACheckpointAndResumeGivesTheUninterruptedImage)
 // Issue 13 row 12: after an interrupted render, the same command without --resume neither
 // deletes the checkpoint nor overwrites the partial image; it says how to resume or discard.
 TEST(RenderInterrupt, RerunningWithoutResumeKeepsTheCheckpointAndSaysHowToGoOn) {
-  const fs::path folder = fs::path(HYLIOS_BINARY_DIR) / "render_interrupt_keep_test";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const fs::path folder = freshFolder("render_interrupt_keep_test");
   ASSERT_TRUE(fs::exists(fs::path(HYLIOS_BINARY_DIR) / "hylios"))
       << "build the hylios target first";
-  const std::string scene =
-      (fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml").string();
+  const std::string scene = kTestScene;
   const std::string out = (folder / "kept.exr").string();
   const fs::path state = out + ".hylios-state";
   fs::remove(out);
