@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/progress_bar.h"
+#include "app/spectral_table_spectrum.h"
 #include "app/spectrum_wavelength.h"
 #include "app/wavelength_list.h"
 #include "python/argument_checks.h"
@@ -47,8 +48,9 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
   const std::size_t n = wavelengths.size();
   std::vector<skin::SkinTally> tallies(n);
   std::vector<double> effectBound(n, 0.0);
-  // As the command: the spectral walk (full model, no effect plan) unless table mode was asked
-  // for; otherwise per wavelength, the effect plan's walk or the exit table.
+  // As the command: the spectral walk (full model, no effect plan), or in table mode the bundles'
+  // tables from spectral walks; with the per-wavelength estimator, per wavelength, the effect
+  // plan's walk or its exit table.
   const bool spectral = estimator == skin::Estimator::Spectral && skinMode == skin::SkinMode::Walk;
   const bool cancellable = !spectral && skinMode == skin::SkinMode::Walk;
   const SpectrumWavelengthSettings settings{angleDeg, rays, seed, epsilon, false, skinMode};
@@ -60,6 +62,9 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
         if (spectral) {
           skin::WalkRunOptions run{angleDeg, rays, seed};
           tallies = simulateTallies(skin::Estimator::Spectral, optics, run, stop, bar.get());
+        } else if (estimator == skin::Estimator::Spectral) {
+          tallies = spectralTableTallies(optics, angleDeg, rays, seed);
+          if (bar) bar->advance(n);
         } else {
           tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
             if (stop()) return;

@@ -57,6 +57,18 @@ def test_spectrum_spectral_matches_command(tmp_path):
     compare_spectrum(read_csv(out), curve)
 
 
+def test_spectrum_table_mode_matches_command(tmp_path, monkeypatch):
+    # Table mode with the spectral estimator: the bundle's tables are built once from spectral walks
+    # (by the command, into this cache) and then read by the module (its cache is made on first use).
+    monkeypatch.setenv("HYLIOS_CACHE_DIR", str(tmp_path / "cache"))
+    out = tmp_path / "s.csv"
+    run_hylios("spectrum", "--specimen", "S1", "--wavelengths", "300,320,340", "--rays", "2000",
+               "--seed", "5", "--skin-model", "table", "--out", out)
+    curve = hylios.spectrum("S1", [300, 320, 340], rays=2000, seed=5, skin_model="table")
+    compare_spectrum(read_csv(out), curve)
+    assert len(list((tmp_path / "cache").glob("exit-*.hxt"))) == 3
+
+
 def test_spectral_same_at_any_thread_count():
     one = hylios.spectrum("S1", "400:700:20", rays=1500, threads=1)
     two = hylios.spectrum("S1", "400:700:20", rays=1500, threads=2)
