@@ -12,6 +12,7 @@
 #include "skin/sampling/cosine_sampling.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_walk.h"
+#include "tests/support/test_scenes.h"
 
 using hylios::kPi;
 
@@ -19,19 +20,8 @@ using namespace hylios;
 
 namespace {
 
-EmissionDesc constant(double value) {
-  EmissionDesc e;
-  e.kind = EmissionDesc::Kind::Constant;
-  e.scale = value;
-  return e;
-}
-
-BandDesc band(double nm) {
-  BandDesc b;
-  b.name = "b";
-  b.minNm = b.maxNm = nm;
-  return b;
-}
+using test::constantSpectrum;
+using test::singleWavelengthBand;
 
 /// A sphere of `material` (radius 1 at the origin) seen from +z, in a uniform environment L.
 SceneDesc sphereScene(const MaterialDesc& material, double environment, int maxDepth = 8) {
@@ -40,7 +30,7 @@ SceneDesc sphereScene(const MaterialDesc& material, double environment, int maxD
   scene.camera.verticalFovDeg = 25;
   scene.film.width = scene.film.height = 24;
   scene.film.samplesPerPixel = 4;
-  scene.film.bands = {band(550)};
+  scene.film.bands = {singleWavelengthBand(550)};
   scene.materials = {material};
   ShapeDesc sphere;
   sphere.kind = ShapeDesc::Kind::Sphere;
@@ -49,7 +39,7 @@ SceneDesc sphereScene(const MaterialDesc& material, double environment, int maxD
   if (environment > 0) {
     LightDesc env;
     env.kind = LightDesc::Kind::Environment;
-    env.emission = constant(environment);
+    env.emission = constantSpectrum(environment);
     scene.lights = {env};
   }
   scene.integrator.maxDepth = maxDepth;
@@ -60,7 +50,7 @@ MaterialDesc diffuse(double rho) {
   MaterialDesc m;
   m.kind = MaterialDesc::Kind::Diffuse;
   m.name = "d";
-  m.reflectance = constant(rho);
+  m.reflectance = constantSpectrum(rho);
   return m;
 }
 
@@ -140,7 +130,7 @@ TEST(Integrator, PointLightOnADiffusePlaneIsExact) {
   LightDesc point;
   point.kind = LightDesc::Kind::Point;
   point.position = {1, 0, 2};
-  point.emission = constant(3);
+  point.emission = constantSpectrum(3);
   scene.lights = {point};
   const Integrator integrator(scene, {550});
   hylios::skin::Rng rng(1);
@@ -170,7 +160,7 @@ TEST(Integrator, SphericalAreaLightOnADiffusePlaneMatchesItsSolidAngle) {
   LightDesc area;
   area.kind = LightDesc::Kind::Area;
   area.shape = "lamp";
-  area.emission = constant(2);
+  area.emission = constantSpectrum(2);
   scene.lights = {area};
   const Integrator integrator(scene, {550});
   double sum = 0, sum2 = 0;
@@ -224,9 +214,9 @@ TEST(Integrator, SameSeedSameImageAtOneAndTwoThreads) {
   LightDesc point;
   point.kind = LightDesc::Kind::Point;
   point.position = {2, 2, 3};
-  point.emission = constant(5);
+  point.emission = constantSpectrum(5);
   scene.lights.push_back(point);
-  scene.film.bands = {band(365), band(550)};
+  scene.film.bands = {singleWavelengthBand(365), singleWavelengthBand(550)};
   scene.film.width = scene.film.height = 16;
   const Integrator integrator(scene, {365, 550});
   Film one(scene.film), two(scene.film);

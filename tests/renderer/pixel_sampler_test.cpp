@@ -18,6 +18,7 @@
 #include "skin/core/random.h"
 #include "skin/core/thread_limit.h"
 #include "tests/support/chi2.h"
+#include "tests/support/test_scenes.h"
 
 using namespace hylios;
 
@@ -276,13 +277,6 @@ TEST(PixelSampler, SobolStreamFallsBackToTheRngAfterItsDimensions) {
 
 namespace {
 
-EmissionDesc constant(double value) {
-  EmissionDesc e;
-  e.kind = EmissionDesc::Kind::Constant;
-  e.scale = value;
-  return e;
-}
-
 /// A Lambertian sphere (ρ = 1, radius 1) in a uniform environment L = 2 seen from +z: every
 /// pixel's expectation is L (the sphere reflects exactly what the sky sends).
 SceneDesc furnace(SamplerKind sampler, int spp, std::uint64_t seed) {
@@ -291,14 +285,11 @@ SceneDesc furnace(SamplerKind sampler, int spp, std::uint64_t seed) {
   scene.camera.verticalFovDeg = 35;
   scene.film.width = scene.film.height = 32;
   scene.film.samplesPerPixel = spp;
-  BandDesc band;
-  band.name = "b";
-  band.minNm = band.maxNm = 550;
-  scene.film.bands = {band};
+  scene.film.bands = {test::singleWavelengthBand(550)};
   MaterialDesc white;
   white.kind = MaterialDesc::Kind::Diffuse;
   white.name = "white";
-  white.reflectance = constant(1.0);
+  white.reflectance = test::constantSpectrum(1.0);
   scene.materials = {white};
   ShapeDesc sphere;
   sphere.kind = ShapeDesc::Kind::Sphere;
@@ -306,7 +297,7 @@ SceneDesc furnace(SamplerKind sampler, int spp, std::uint64_t seed) {
   scene.shapes = {sphere};
   LightDesc sky;
   sky.kind = LightDesc::Kind::Environment;
-  sky.emission = constant(2.0);
+  sky.emission = test::constantSpectrum(2.0);
   scene.lights = {sky};
   scene.integrator.maxDepth = 4;
   scene.integrator.seed = seed;

@@ -14,6 +14,7 @@
 #include "renderer/scene/scene_file.h"
 #include "renderer/tracing/integrator.h"
 #include "skin/core/thread_limit.h"
+#include "tests/support/test_scenes.h"
 
 using namespace hylios;
 namespace fs = std::filesystem;
@@ -25,17 +26,8 @@ constexpr int kSpp = 12;
 /// The skin sphere test scene at 24×24 with 4 channels (550 nm; 600–700 nm in 50 nm steps), so
 /// the channel stratification (which depends on the spp target) matters.
 SceneDesc testScene() {
-  SceneDesc scene = loadSceneFile(fs::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml");
-  scene.film.width = scene.film.height = 24;
-  scene.film.samplesPerPixel = kSpp;
-  BandDesc range;
-  range.name = "red";
-  range.minNm = 600;
-  range.maxNm = 700;
-  range.stepNm = 50;
-  range.previewMin = 0;
-  range.previewMax = 1;
-  scene.film.bands.push_back(range);
+  SceneDesc scene = test::skinSphereScene(24, kSpp);
+  scene.film.bands.push_back(test::rangeBand("red", 600, 700, 50));
   return scene;
 }
 

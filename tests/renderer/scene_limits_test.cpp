@@ -14,6 +14,7 @@
 #include "renderer/tracing/integrator.h"
 #include "renderer/tracing/render_memory.h"
 #include "skin/core/constants.h"
+#include "tests/support/test_scenes.h"
 
 namespace hylios {
 namespace {
@@ -84,10 +85,7 @@ TEST(SceneLimits, Row2AFarHugeSphereLeavesTheDirectLightNearTheOrigin) {
   scene.camera.position = {0, 0, 6};
   scene.film.width = scene.film.height = 8;
   scene.film.samplesPerPixel = 1;
-  BandDesc band;
-  band.name = "b";
-  band.minNm = band.maxNm = 550;
-  scene.film.bands = {band};
+  scene.film.bands = {test::singleWavelengthBand(550)};
   MaterialDesc paint;
   paint.kind = MaterialDesc::Kind::Diffuse;
   paint.name = "paint";

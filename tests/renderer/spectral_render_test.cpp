@@ -14,24 +14,15 @@
 #include "renderer/scene/scene_file.h"
 #include "renderer/tracing/integrator.h"
 #include "skin/core/thread_limit.h"
+#include "tests/support/test_scenes.h"
 
 using namespace hylios;
 
 namespace {
 
 SceneDesc testScene(skin::Estimator estimator) {
-  SceneDesc scene =
-      loadSceneFile(std::filesystem::path(HYLIOS_SOURCE_DIR) / "scenes/test/skin_sphere_550.toml");
-  scene.film.width = scene.film.height = 32;
-  scene.film.samplesPerPixel = 96;
-  BandDesc band;
-  band.name = "green";
-  band.minNm = 500;
-  band.maxNm = 600;
-  band.stepNm = 50;
-  band.previewMin = 0;
-  band.previewMax = 1;
-  scene.film.bands = {band};
+  SceneDesc scene = test::skinSphereScene(32, 96);
+  scene.film.bands = {test::rangeBand("green", 500, 600, 50)};
   scene.integrator.estimator = estimator;
   scene.integrator.seed = estimator == skin::Estimator::Spectral ? 5 : 6;
   return scene;
