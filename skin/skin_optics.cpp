@@ -39,12 +39,8 @@ double checkedSpecificAbsorption(const SpectralSource& spectra, Absorber a, doub
 }  // namespace
 
 SpectralSource spectralSourceOf(const SpectralDatabase& spectra) {
-  for (Absorber a : kAllAbsorbers)
-    if (SpectralDatabase::concentrationUnit(a) != absorberConcentrationUnit(a))
-      throw std::logic_error(
-          fmt::format("spectral data express {} per a different concentration unit than "
-                      "layer_composition.h uses",
-                      absorberName(a)));
+  // The data's concentration units are layer_composition.h's (SpectralDatabase::concentrationUnit
+  // is absorberConcentrationUnit), so the specific absorptions multiply its concentrations.
   return {[&spectra](Absorber a, double nm) { return spectra.specificAbsorption(a, nm); },
           [&spectra](double nm) { return spectra.waterRefractiveIndex(nm); }};
 }

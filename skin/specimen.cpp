@@ -224,13 +224,11 @@ std::string readString(const toml::node& node, std::string_view key, const std::
 
 MelanosomeArrangement parseArrangement(const toml::node& node, const std::string& source) {
   const std::string text = readString(node, "arrangement", source);
-  if (text == "light_complexes") return MelanosomeArrangement::LightComplexes;
-  if (text == "moderate_complexes") return MelanosomeArrangement::ModerateComplexes;
-  if (text == "dispersed") return MelanosomeArrangement::Dispersed;
-  fail(source, node.source(),
-       fmt::format("'arrangement' = \"{}\" is not one of \"light_complexes\", "
-                   "\"moderate_complexes\", \"dispersed\"",
-                   text));
+  if (const auto arrangement = findEnum(text, kArrangementNames)) return *arrangement;
+  std::string names;
+  for (const auto& n : kArrangementNames)
+    names += (names.empty() ? "\"" : ", \"") + std::string(n.name) + "\"";
+  fail(source, node.source(), fmt::format("'arrangement' = \"{}\" is not one of {}", text, names));
 }
 
 /// Checks keys of `table` against `schemaTable` and stores the values. Subtables are allowed

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "skin/core/enum_names.h"
 #include "skin/layer.h"
 
 namespace hylios::skin {
@@ -19,6 +20,11 @@ enum class MelanosomeArrangement {
   ModerateComplexes,  ///< spheres of diameter 1× the major axis (moderately pigmented)
   Dispersed,          ///< individually dispersed prolate spheroids (darkly pigmented)
 };
+/// The arrangements' names in specimen files (`arrangement`).
+inline constexpr EnumNames<MelanosomeArrangement, 3> kArrangementNames{
+    {{MelanosomeArrangement::LightComplexes, "light_complexes"},
+     {MelanosomeArrangement::ModerateComplexes, "moderate_complexes"},
+     {MelanosomeArrangement::Dispersed, "dispersed"}}};
 
 /// Table 2: values held fixed across specimens.
 struct FixedParameters {

@@ -11,15 +11,7 @@ std::string number(double v) { return fmt::format("{}", v); }
 std::string percent(double fraction) { return number(fraction * 100.0); }
 
 std::string arrangementName(MelanosomeArrangement a) {
-  switch (a) {
-    case MelanosomeArrangement::LightComplexes:
-      return "light_complexes";
-    case MelanosomeArrangement::ModerateComplexes:
-      return "moderate_complexes";
-    case MelanosomeArrangement::Dispersed:
-      return "dispersed";
-  }
-  return "light_complexes";
+  return std::string(enumName(a, kArrangementNames));
 }
 
 std::string quoted(const std::string& s) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "skin/core/constants.h"
+#include "skin/layer_composition.h"
 #include "skin/piecewise_spectrum.h"
 #include "skin/spectral_extensions.h"
 #include "skin/spectral_table.h"
@@ -406,16 +407,7 @@ double SpectralDatabase::specificAbsorption(Absorber absorber, double wavelength
 }
 
 ConcentrationUnit SpectralDatabase::concentrationUnit(Absorber absorber) {
-  switch (absorber) {
-    case Absorber::Keratin:
-    case Absorber::Water:
-    case Absorber::Lipid:
-      return ConcentrationUnit::VolumeFraction;
-    case Absorber::UrocanicAcid:
-      return ConcentrationUnit::MolarConcentration;
-    default:
-      return ConcentrationUnit::MassConcentration;
-  }
+  return absorberConcentrationUnit(absorber);  // one table: skin/layer_composition.cpp
 }
 
 SpectralCoverage SpectralDatabase::coverage(Absorber absorber) const {
