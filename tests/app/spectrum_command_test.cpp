@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "tests/support/file_bytes.h"
+#include "tests/support/scratch_csv.h"
 
 namespace hylios {
 namespace {
@@ -17,19 +19,10 @@ namespace {
 namespace fs = std::filesystem;
 
 void runSpectrum(const std::vector<std::string>& args) {
-  CLI::App app;
-  registerSpectrumCommand(app);
-  std::vector<const char*> argv{"hylios", "spectrum"};
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  app.parse(static_cast<int>(argv.size()), argv.data());
+  test::runCommandArguments(registerSpectrumCommand, "spectrum", args);
 }
 
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using test::readBytes;
 
 TEST(SpectrumCommand, SameSeedGivesByteIdenticalCsvAtAnyThreadCount) {
   const fs::path one = fs::path(HYLIOS_BINARY_DIR) / "spectrum_test_1thread.csv";
@@ -44,8 +37,8 @@ TEST(SpectrumCommand, SameSeedGivesByteIdenticalCsvAtAnyThreadCount) {
   };
   runSpectrum(with("1", one));
   runSpectrum(with("2", two));
-  const std::string csv = readAll(one);
-  EXPECT_EQ(csv, readAll(two));
+  const std::string csv = readBytes(one);
+  EXPECT_EQ(csv, readBytes(two));
   std::istringstream lines(csv);
   std::string header, row;
   std::getline(lines, header);

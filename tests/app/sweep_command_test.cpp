@@ -17,6 +17,8 @@
 #include "app/sweep_cases.h"
 #include "app/sweep_journal.h"
 #include "skin/core/content_hash.h"
+#include "tests/support/file_bytes.h"
+#include "tests/support/scratch_csv.h"
 
 namespace hylios {
 namespace {
@@ -24,19 +26,10 @@ namespace {
 namespace fs = std::filesystem;
 
 void runSweep(const std::vector<std::string>& args) {
-  CLI::App app;
-  registerSweepCommand(app);
-  std::vector<const char*> argv{"hylios", "sweep"};
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  app.parse(static_cast<int>(argv.size()), argv.data());
+  test::runCommandArguments(registerSweepCommand, "sweep", args);
 }
 
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using test::readBytes;
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
@@ -133,7 +126,7 @@ class SweepCommand : public ::testing::Test {
 TEST_F(SweepCommand, WritesOneRowPerCaseAngleAndWavelengthInCaseOrder) {
   const fs::path out = dir_ / "grid.csv";
   runSweep(args(out));
-  const auto rows = lines(readAll(out));
+  const auto rows = lines(readBytes(out));
   ASSERT_EQ(rows.size(), 1u + 3 * 2 * 2);
   EXPECT_EQ(rows[0],
             "case,melanosome_percent,angle_deg,wavelength_nm,reflectance,reflectance_stderr,"
@@ -149,7 +142,7 @@ TEST_F(SweepCommand, WritesOneRowPerCaseAngleAndWavelengthInCaseOrder) {
 TEST_F(SweepCommand, ResumeKeepsTheJournalsCasesAndComputesTheRest) {
   const fs::path whole = dir_ / "whole.csv";
   runSweep(args(whole));
-  const std::string wholeCsv = readAll(whole);
+  const std::string wholeCsv = readBytes(whole);
   // An interrupted run (the test hook stops it after 2 journaled cases) leaves no output and a
   // journal of cases 0 and 1.
   const fs::path out = dir_ / "resumed.csv";
@@ -158,12 +151,12 @@ TEST_F(SweepCommand, ResumeKeepsTheJournalsCasesAndComputesTheRest) {
   ::unsetenv("HYLIOS_TEST_SWEEP_EXIT");
   EXPECT_FALSE(fs::exists(out));
   const fs::path journal = sweepJournalPath(out);
-  std::string text = readAll(journal);
+  std::string text = readBytes(journal);
   ASSERT_EQ(lines(text).size(), 1u + 2 * (1 + 4 + 1));
   // Without --resume the journal is refused and left as it is.
   EXPECT_NE(errorOf([&] { runSweep(args(out)); }).find("holds an interrupted sweep"),
             std::string::npos);
-  EXPECT_EQ(readAll(journal), text);
+  EXPECT_EQ(readBytes(journal), text);
   // Case 1's first reflectance is altered (and its record's hash with it, through SweepJournal),
   // and a torn record of case 2 is appended, as a kill while writing would leave it.
   EXPECT_NE(errorOf([&] { readSweepJournal(journal, 0, 3); })
@@ -197,7 +190,7 @@ TEST_F(SweepCommand, ResumeKeepsTheJournalsCasesAndComputesTheRest) {
     a.push_back("--resume");
     return a;
   }());
-  const std::string resumed = readAll(out);
+  const std::string resumed = readBytes(out);
   EXPECT_FALSE(fs::exists(journal));
   // Everything equals the uninterrupted sweep but the altered value, kept from the journal.
   std::string expected = wholeCsv;

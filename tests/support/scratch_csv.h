@@ -64,6 +64,17 @@ inline void runCommandLine(const std::function<void(CLI::App&)>& registerCommand
   app.parse(commandLine, false);
 }
 
+/// Parses "hylios name args…" (each argument as given, no splitting) with the command registered
+/// by `registerCommand`; the command's callback runs (and throws) inside.
+inline void runCommandArguments(const std::function<void(CLI::App&)>& registerCommand,
+                                const std::string& name, const std::vector<std::string>& args) {
+  CLI::App app;
+  registerCommand(app);
+  std::vector<const char*> argv{"hylios", name.c_str()};
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  app.parse(static_cast<int>(argv.size()), argv.data());
+}
+
 /// runCommandLine bound to one command: `run("arguments…")` parses "name arguments…".
 struct CommandRunner {
   CommandRunner(std::function<void(CLI::App&)> registerCommand, std::string name)
