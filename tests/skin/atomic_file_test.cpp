@@ -9,16 +9,14 @@
 #include <unistd.h>
 
 #include "skin/core/atomic_file.h"
+#include "tests/support/file_bytes.h"
 
 namespace fs = std::filesystem;
 
 TEST(AtomicFile, WritesWholeFile) {
   const fs::path path = fs::temp_directory_path() / "hylios_atomic_ok.txt";
   hylios::writeTextAtomically(path, "hello\n");
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "hello");
+  EXPECT_EQ(hylios::test::readBytes(path), "hello\n");
   fs::remove(path);
 }
 
@@ -34,10 +32,7 @@ TEST(AtomicFile, FailedWriteLeavesOldFileAndNoTemporary) {
                                        }),
                std::runtime_error);
   EXPECT_FALSE(fs::exists(seenTmp));
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "old");
+  EXPECT_EQ(hylios::test::readBytes(path), "old\n");
   fs::remove(path);
 }
 
@@ -53,10 +48,7 @@ TEST(AtomicFile, FollowsASymlinkAndReplacesItsTarget) {
   fs::create_symlink(target, link);
   hylios::writeTextAtomically(link, "new\n");
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
-  std::ifstream in(target);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "new");
+  EXPECT_EQ(hylios::test::readBytes(target), "new\n");
   fs::remove_all(folder);
 }
 
