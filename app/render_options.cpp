@@ -70,7 +70,7 @@ void addRenderCommandOptions(CLI::App& command, RenderCommandOptions& options) {
   addEnumOption(command, "--sampler", options.sampler, kSamplerNames,
                 "independent (every number of a camera path independent) or sobol "
                 "(Owen-scrambled Sobol' points per pixel for the camera sample and the first "
-                "light samples and bounces); default: the scene's, else independent");
+                "light samples and bounces); default: the scene's, else sobol");
 }
 
 RenderSettings renderSettingsFromOptions(const RenderCommandOptions& options) {

@@ -150,7 +150,7 @@ struct IntegratorDesc {
   /// (every band, R, G, B and chromaticity), or spp is reached; unset: render spp samples.
   std::optional<double> noiseTarget;
   /// The camera paths' numbers (renderer/tracing/pixel_sampler.h).
-  SamplerKind sampler = SamplerKind::Independent;
+  SamplerKind sampler = SamplerKind::Sobol;
   SourceLocation where;
 };
 

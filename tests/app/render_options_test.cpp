@@ -33,9 +33,10 @@ TEST(RenderOptions, SamplerOptionSetsTheSettingAndTheScene) {
   EXPECT_EQ(
       applyRenderSettings(SceneDesc{}, parse({"--sampler", "independent"})).integrator.sampler,
       SamplerKind::Independent);
+  EXPECT_EQ(SceneDesc{}.integrator.sampler, SamplerKind::Sobol);  // the default
   SceneDesc scene;
-  scene.integrator.sampler = SamplerKind::Sobol;  // the scene's choice stands without the option
-  EXPECT_EQ(applyRenderSettings(scene, parse({})).integrator.sampler, SamplerKind::Sobol);
+  scene.integrator.sampler = SamplerKind::Independent;  // the scene's choice stands without it
+  EXPECT_EQ(applyRenderSettings(scene, parse({})).integrator.sampler, SamplerKind::Independent);
 }
 
 TEST(RenderOptions, UnknownSamplerIsRefusedWithTheChoices) {
