@@ -15,6 +15,7 @@
 #include "app/common_options.h"
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
+#include "app/mpi_session.h"
 #include "app/option_checks.h"
 #include "app/progress_bar.h"
 #include "app/walk_study.h"
@@ -134,6 +135,7 @@ void runBrdf(const BrdfArguments& args) {
     perWavelength.push_back(skin::reflectionDistribution(tally));
   progress.advance(wavelengths.size());
   progress.finish();
+  if (!MpiSession::isRoot()) return;  // only rank 0 prints and writes
   const skin::ReflectionDistribution d = skin::meanOverWavelengths(perWavelength);
   writeTextAtomically(args.study.out, formatCsv(bins, d));
   std::printf("%s, %s, incidence %g°: R_s = %.5f ± %.5f, R_d = %.5f ± %.5f, R_t = %.5f ± %.5f\n",

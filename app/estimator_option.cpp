@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include "app/enum_option.h"
+#include "app/mpi_spectral.h"
 #include "skin/spectral_simulation.h"
 
 namespace hylios {
@@ -17,12 +18,15 @@ void addEstimatorOption(CLI::App& command, skin::Estimator& estimator) {
 std::vector<skin::SkinTally> simulateWithEstimator(skin::Estimator estimator,
                                                    const std::vector<skin::SkinOptics>& optics,
                                                    const skin::WalkRunOptions& run) {
-  if (estimator == skin::Estimator::Spectral) {
-    return skin::simulateSkinSpectral(optics, skin::commandSpectralRun(run));
-  }
-  std::vector<skin::SkinTally> tallies(optics.size());
-  tbb::parallel_for(std::size_t{0}, optics.size(),
-                    [&](std::size_t i) { tallies[i] = skin::simulateSkin(optics[i], run); });
+  // Under MPI (app/mpi_spectral.h): the spectral chunks, or the wavelengths, divided among the
+  // ranks; the tallies of the one-process run on rank 0.
+  if (estimator == skin::Estimator::Spectral)
+    return simulateSkinSpectralOnRanks(optics, skin::commandSpectralRun(run));
+  std::vector<skin::SkinTally> tallies(optics.size(), skin::SkinTally(run.tally));
+  tbb::parallel_for(std::size_t{0}, optics.size(), [&](std::size_t i) {
+    if (rankOwnsItem(i)) tallies[i] = skin::simulateSkin(optics[i], run);
+  });
+  gatherOwnedTallies(tallies, run.tally);
   return tallies;
 }
 

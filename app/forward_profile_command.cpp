@@ -17,6 +17,7 @@
 #include "app/common_options.h"
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
+#include "app/mpi_session.h"
 #include "app/option_checks.h"
 #include "app/walk_study.h"
 #include "skin/core/atomic_file.h"
@@ -102,6 +103,7 @@ void runForwardProfile(const ForwardProfileArguments& args) {
   run.tally.polarBins = args.polarBins;
   run.tally.azimuthBins = 1;  // azimuthally averaged
   const skin::SkinTally tally = simulateWithEstimator(args.study.estimator, {optics}, run).front();
+  if (!MpiSession::isRoot()) return;  // only rank 0 prints and writes
   const skin::TransmissionProfile profile = skin::transmissionProfile(tally);
   writeTextAtomically(args.study.out, formatCsv(profile));
   std::printf("%s epidermis at %g nm, below n = %.4f: T = %.5f ± %.5f, R = %.5f, absorbed %.5f\n",

@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
     return hylios::MpiSession::failCommand(
         std::string("'hylios ") + argv[1] +
         "' does not divide its work among MPI ranks; run it as one process, without "
-        "mpirun/srun (spectrum, render and sweep do, docs/cluster.md)");
+        "mpirun/srun (spectrum, brdf, forward-profile, radial-profile, render and sweep do, "
+        "docs/cluster.md)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

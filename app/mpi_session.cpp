@@ -121,7 +121,10 @@ bool MpiSession::available() {
 }
 
 bool MpiSession::dividesWork(const std::string& name) {
-  return name == "spectrum" || name == "render" || name == "sweep";
+  for (const char* divided :
+       {"spectrum", "brdf", "forward-profile", "radial-profile", "render", "sweep"})
+    if (name == divided) return true;
+  return false;
 }
 
 int MpiSession::failCommand(const std::string& message, double waitSeconds) {

@@ -33,8 +33,8 @@ class MpiSession {
   static bool distributed() { return size() > 1; }
   /// Whether this build has MPI.
   static bool available();
-  /// Whether the subcommand `name` divides its work among the ranks (spectrum, render, sweep);
-  /// main() refuses the others under distribution.
+  /// Whether the subcommand `name` divides its work among the ranks (spectrum, brdf,
+  /// forward-profile, radial-profile, render, sweep); main() refuses the others under distribution.
   static bool dividesWork(const std::string& name);
 
   /// What main() does with an exception of a command on a rank: when every rank failed (each

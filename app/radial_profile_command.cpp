@@ -10,6 +10,7 @@
 #include "app/common_options.h"
 #include "app/estimator_option.h"
 #include "app/gnuplot_plot.h"
+#include "app/mpi_session.h"
 #include "app/option_checks.h"
 #include "app/walk_study.h"
 #include "skin/core/atomic_file.h"
@@ -79,6 +80,7 @@ void runRadialProfile(const RadialProfileArguments& args) {
   run.tally.maxRadiusCm = args.maxRadiusCm;
   const skin::RadialProfile profile =
       skin::radialProfile(simulateWithEstimator(args.study.estimator, {optics}, run).front());
+  if (!MpiSession::isRoot()) return;  // only rank 0 prints and writes
   writeTextAtomically(args.study.out, formatCsv(profile));
   std::printf("%s at %g nm, incidence %g°: R_d = %.5f ± %.5f, of which %.5f ± %.5f beyond %g cm\n",
               specimen.name.c_str(), args.wavelengthNm, args.angleDeg,

@@ -270,7 +270,8 @@ void registerSweepCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   command->add_flag("--resume", args->resume,
                     "Continue the interrupted sweep whose journal <out>.partial lies beside --out "
-                    "(same command): its completed cases are kept");
+                    "(same command): its completed cases are kept; without a journal, start "
+                    "afresh");
   command->callback([args] { runSweep(*args); });
 }
 

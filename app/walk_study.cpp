@@ -2,6 +2,7 @@
 
 #include "app/common_options.h"
 #include "app/estimator_option.h"
+#include "app/mpi_session.h"
 #include "renderer/scene/data_paths.h"
 
 namespace hylios {
@@ -25,7 +26,10 @@ WalkStudy::OutputsChecked::OutputsChecked(const WalkStudyOptions& options,
                                           const std::vector<NamedPath>& inputs) {
   std::vector<NamedPath> all = {inputFile("--specimen", options.specimen.specimen)};
   all.insert(all.end(), inputs.begin(), inputs.end());
-  checkOutputs({{"--out", options.out}, {"--plot", options.plot, true}}, all);
+  // Under MPI: checked on rank 0, every rank stops with its verdict (app/mpi_session.h).
+  shareRootVerdict([&] {
+    checkOutputs({{"--out", options.out}, {"--plot", options.plot, true}}, all);
+  });
 }
 
 WalkStudy::WalkStudy(const WalkStudyOptions& options, const std::vector<NamedPath>& inputs)

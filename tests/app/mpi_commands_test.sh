@@ -2,6 +2,8 @@
 # Commands under MPI and the sweep's journal, run as processes (registered by tests/CMakeLists.txt;
 # the mpi_* cases only in a build with MPI). Usage: mpi_commands_test.sh HYLIOS CASE.
 #   mpi_spectrum      spectrum at -np 2 and -np 3: the CSV byte-identical to one process
+#   mpi_profiles      brdf (both estimators) and radial-profile at -np 2/3: CSVs byte-identical;
+#                     a command that does not divide its work is refused under -np 2
 #   mpi_render        render at -np 2 (also with a noise target): the EXR byte-identical to one
 #                     process but for its DateTime attribute (the time of writing), PNG identical
 #   mpi_sweep_resume  sweep at -np 2 killed after 3 journaled cases (rank 0 ends as by SIGKILL),
@@ -40,6 +42,28 @@ case $case_name in
     [ "$(wc -l <one.csv)" -eq 12 ] || fail "one.csv: expected a header and 11 rows"
     same one.csv two.csv
     same one.csv three.csv
+    ;;
+  mpi_profiles)
+    # Tallies with histograms (brdf: directions; radial-profile: exit radii), both estimators.
+    brdf=(brdf --specimen S1 --angle 30 --wavelengths 450,550,650 --rays 6000 --seed 5)
+    "$hylios" "${brdf[@]}" --threads 2 --out brdf1.csv
+    "${mpirun[@]}" -np 2 "$hylios" "${brdf[@]}" --threads 1 --out brdf2.csv
+    same brdf1.csv brdf2.csv
+    "$hylios" "${brdf[@]}" --estimator per-wavelength --out brdfw1.csv
+    "${mpirun[@]}" -np 2 "$hylios" "${brdf[@]}" --estimator per-wavelength --threads 1 \
+      --out brdfw2.csv
+    same brdfw1.csv brdfw2.csv
+    radial=(radial-profile --specimen S2 --wavelength 550 --rays 8000 --bins 20 --seed 2)
+    "$hylios" "${radial[@]}" --out radial1.csv
+    "${mpirun[@]}" -np 3 "$hylios" "${radial[@]}" --threads 1 --out radial3.csv
+    same radial1.csv radial3.csv
+    # A command that does not divide its work refuses to run on several ranks, with one message.
+    if "${mpirun[@]}" -np 2 "$hylios" coefficients --specimen S1 --wavelengths 550 \
+      --out c.csv 2>err.txt; then
+      fail "coefficients ran under mpirun -np 2"
+    fi
+    [ "$(grep -c 'does not divide its work among MPI ranks' err.txt)" -eq 1 ] ||
+      fail "expected one refusal: $(cat err.txt)"
     ;;
   mpi_render)
     scene=$HYLIOS_DATA_DIR/scenes/test/skin_sphere_550.toml
