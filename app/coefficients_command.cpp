@@ -21,6 +21,7 @@
 #include "app/commands.h"
 #include "app/gnuplot_plot.h"
 #include "app/option_checks.h"
+#include "app/specimen_options.h"
 #include "app/wavelength_list.h"
 #include "renderer/scene/data_paths.h"
 #include "skin/core/atomic_file.h"
@@ -33,30 +34,11 @@ namespace hylios {
 namespace {
 
 struct CoefficientsOptions {
-  std::string specimen;
+  SpecimenOptions specimen;  ///< --specimen (required here) and --set, as in every command
   std::string wavelengths = "250:2500:5";
   std::string csvPath;
   std::string plotPath;
-  std::vector<std::string> overrides;
 };
-
-skin::SpecimenOverride parseOverride(const std::string& text) {
-  const auto equals = text.find('=');
-  const std::string origin = "--set '" + text + "'";
-  if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())
-    throw std::invalid_argument(origin + ": expected key=value");
-  const std::string valueText = text.substr(equals + 1);
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(valueText, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != valueText.size())
-    throw std::invalid_argument(origin + ": '" + valueText + "' is not a number");
-  return {text.substr(0, equals), value, origin};
-}
 
 std::string csvHeader() {
   std::string header =
@@ -153,11 +135,9 @@ void writePlot(const std::filesystem::path& png, const skin::Specimen& specimen,
 
 void runCoefficients(const CoefficientsOptions& options) {
   checkOutputs({{"--out", options.csvPath}, {"--plot", options.plotPath, true}},
-               {inputFile("--specimen", options.specimen)});
+               {inputFile("--specimen", options.specimen.specimen)});
   const std::vector<double> wavelengths = parseWavelengthList(options.wavelengths);
-  skin::Specimen specimen = skin::loadSpecimen(options.specimen, specimenDir());
-  for (const std::string& text : options.overrides)
-    skin::applyOverride(specimen, parseOverride(text));
+  const skin::Specimen specimen = loadSpecimenWithOverrides(options.specimen);
   const skin::SpectralDatabase spectra = skin::SpectralDatabase::load(spectraDir());
 
   std::vector<skin::SkinOptics> optics;
@@ -183,7 +163,7 @@ void registerCoefficientsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "coefficients", "Write every layer's optical coefficients of a specimen (CSV, optional PNG)");
   command
-      ->add_option("--specimen", options->specimen,
+      ->add_option("--specimen", options->specimen.specimen,
                    "S1..S4 (scenes/specimens/) or the path of a specimen .toml file")
       ->required();
   command
@@ -191,9 +171,7 @@ void registerCoefficientsCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", options->csvPath, "CSV file to write")->required();
   command->add_option("--plot", options->plotPath, "PNG file to write (needs gnuplot)");
-  std::string keys;
-  for (const std::string& k : skin::overrideKeys()) keys += (keys.empty() ? "" : ", ") + k;
-  command->add_option("--set", options->overrides, "key=value specimen override; keys: " + keys);
+  addOverrideOption(*command, options->specimen);
   command->callback([options] { runCoefficients(*options); });
 }
 

@@ -35,6 +35,10 @@ void addSpecimenOptions(CLI::App& command, SpecimenOptions& options) {
       .add_option("--specimen", options.specimen,
                   "Specimen S1..S4 (paper Table 1) or a specimen file path")
       ->capture_default_str();
+  addOverrideOption(command, options);
+}
+
+void addOverrideOption(CLI::App& command, SpecimenOptions& options) {
   command.add_option("--set", options.overrides,
                      "Override KEY=VALUE, repeatable; keys: " + joined(skin::overrideKeys()));
 }

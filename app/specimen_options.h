@@ -15,7 +15,10 @@ struct SpecimenOptions {
   std::vector<std::string> overrides;  ///< "key=value"
 };
 
+/// Adds --specimen (default S1) and --set.
 void addSpecimenOptions(CLI::App& command, SpecimenOptions& options);
+/// Adds --set only (for a command with a --specimen of its own).
+void addOverrideOption(CLI::App& command, SpecimenOptions& options);
 
 /// Loads the specimen (by name from scenes/specimens/ or by path) and applies the overrides in
 /// order. Throws skin::SpecimenError with the offending file position or "--set key=value".
