@@ -30,8 +30,8 @@ const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
        {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target",
         "sampler"}},
       {"light",
-       {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg",
-        "shape", "camera_visible"}},
+       {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg", "shape",
+        "camera_visible"}},
       {"material",
        {"name", "type", "specimen", "overrides", "freckles", "melanin_map",
         "water_reduction_percent", "reflectance", "refractive_index", "roughness"}},
@@ -49,6 +49,12 @@ const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
 namespace {
 
 using Reader = TomlTableReader;
+
+/// The reader of element #index of the array of tables `name` ([[name]]), with its keys.
+Reader elementReader(const toml::table& t, const std::string& name, int index,
+                     const TomlSource& src) {
+  return Reader(t, fmt::format("[[{}]] #{}", name, index), src, sceneFileKeys().at(name));
+}
 
 constexpr std::int64_t kMaxResolution = kMaxFilmSide;
 constexpr std::int64_t kMaxPixels = kMaxFilmPixels;
@@ -132,7 +138,7 @@ bool isChannelName(const std::string& name) {
 }
 
 BandDesc readBand(const toml::table& t, int index, const TomlSource& src) {
-  Reader r(t, fmt::format("[[film.band]] #{}", index), src, sceneFileKeys().at("film.band"));
+  Reader r = elementReader(t, "film.band", index, src);
   BandDesc b;
   b.where = r.where();
   b.name = r.string("name");
@@ -252,7 +258,7 @@ IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
 
 LightDesc readLight(const toml::table& t, int index, const TomlSource& src,
                     const NameRegistry& shapes) {
-  Reader r(t, fmt::format("[[light]] #{}", index), src, sceneFileKeys().at("light"));
+  Reader r = elementReader(t, "light", index, src);
   LightDesc l;
   l.where = r.where();
   const std::string type = r.choice("type", {"point", "spot", "area", "environment"});
@@ -379,11 +385,10 @@ SkinMaterialDesc readSkin(Reader& r) {
 }
 
 MaterialDesc readMaterial(const toml::table& t, int index, const TomlSource& src) {
-  Reader r(t, fmt::format("[[material]] #{}", index), src, sceneFileKeys().at("material"));
+  Reader r = elementReader(t, "material", index, src);
   MaterialDesc m;
   m.where = r.where();
-  m.name = r.string("name");
-  if (m.name.empty()) throw SceneError(r.whereValue("name"), "'name' must not be empty");
+  m.name = r.nonEmptyString("name");
   const std::string type = r.choice("type", {"skin", "diffuse", "dielectric"});
   if (type == "skin") {
     m.kind = MaterialDesc::Kind::Skin;
@@ -427,12 +432,10 @@ glm::dmat4 readTransform(const toml::table& t, const std::string& label, const T
 
 ShapeDesc readShape(const toml::table& t, int index, const TomlSource& src,
                     const NameRegistry& materials) {
-  Reader r(t, fmt::format("[[shape]] #{}", index), src, sceneFileKeys().at("shape"));
+  Reader r = elementReader(t, "shape", index, src);
   ShapeDesc s;
   s.where = r.where();
-  s.name = r.string("name", "");
-  if (r.has("name") && s.name.empty())
-    throw SceneError(r.whereValue("name"), "'name' must not be empty");
+  if (r.has("name")) s.name = r.nonEmptyString("name");
   const std::string type = r.choice("type", {"mesh", "sphere", "plane"});
   s.material = r.string("material");
   if (!materials.contains(s.material))

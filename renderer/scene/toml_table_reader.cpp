@@ -127,6 +127,12 @@ std::string TomlTableReader::choice(const std::string& key,
   fail(*table_.get(key), fmt::format("'{}' = \"{}\" is not one of {}", key, value, list));
 }
 
+std::string TomlTableReader::nonEmptyString(const std::string& key) {
+  std::string value = string(key);
+  if (value.empty()) throw SceneError(whereValue(key), fmt::format("'{}' must not be empty", key));
+  return value;
+}
+
 bool TomlTableReader::boolean(const std::string& key, bool fallback) {
   const toml::node* n = node(key);
   if (!n) return fallback;

@@ -86,6 +86,8 @@ class TomlTableReader {
                        std::int64_t fallback);
   std::string string(const std::string& key);  ///< required
   std::string string(const std::string& key, const std::string& fallback);
+  /// Required and not "" ("'key' must not be empty" at the value otherwise).
+  std::string nonEmptyString(const std::string& key);
   /// One of `choices`; the message lists them.
   std::string choice(const std::string& key, const std::vector<std::string>& choices);
   bool boolean(const std::string& key, bool fallback);
