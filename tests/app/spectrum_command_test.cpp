@@ -18,9 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void runSpectrum(const std::vector<std::string>& args) {
-  test::runCommandArguments(registerSpectrumCommand, "spectrum", args);
-}
+const test::CommandRunner runSpectrum(registerSpectrumCommand, "spectrum");
 
 using test::readBytes;
 

@@ -25,9 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void runSweep(const std::vector<std::string>& args) {
-  test::runCommandArguments(registerSweepCommand, "sweep", args);
-}
+const test::CommandRunner runSweep(registerSweepCommand, "sweep");
 
 using test::readBytes;
 

@@ -75,12 +75,17 @@ inline void runCommandArguments(const std::function<void(CLI::App&)>& registerCo
   app.parse(static_cast<int>(argv.size()), argv.data());
 }
 
-/// runCommandLine bound to one command: `run("arguments…")` parses "name arguments…".
+/// runCommandLine bound to one command: `run("arguments…")` parses "name arguments…"; `run({...})`
+/// takes the arguments one by one.
 struct CommandRunner {
   CommandRunner(std::function<void(CLI::App&)> registerCommand, std::string name)
       : registerCommand_(std::move(registerCommand)), name_(std::move(name)) {}
   void operator()(const std::string& arguments) const {
     runCommandLine(registerCommand_, name_ + " " + arguments);
+  }
+  /// The arguments as given, one each (runCommandArguments).
+  void operator()(const std::vector<std::string>& args) const {
+    runCommandArguments(registerCommand_, name_, args);
   }
 
  private:
