@@ -13,19 +13,16 @@ int main(int argc, char** argv) {
   const hylios::MpiSession mpi(argc, argv);
   CLI::App app{"hylios — the HyLIoS hyperspectral skin model and renderer (250–2500 nm)"};
   app.require_subcommand(1);
-  hylios::registerCoefficientsCommand(app);
-  hylios::registerSlabCommand(app);
-  hylios::registerSpectrumCommand(app);
-  hylios::registerBrdfCommand(app);
-  hylios::registerForwardProfileCommand(app);
-  hylios::registerRadialProfileCommand(app);
-  hylios::registerRenderCommand(app);
-  hylios::registerFigureCommand(app);
-  hylios::registerGalleryCommand(app);
-  hylios::registerImageDiffCommand(app);
-  hylios::registerFitCommand(app);
-  hylios::registerValidateCommand(app);
-  hylios::registerSweepCommand(app);
+  // Every subcommand, in the order of `hylios --help`.
+  for (const auto registerCommand :
+       {&hylios::registerCoefficientsCommand, &hylios::registerSlabCommand,
+        &hylios::registerSpectrumCommand, &hylios::registerBrdfCommand,
+        &hylios::registerForwardProfileCommand, &hylios::registerRadialProfileCommand,
+        &hylios::registerRenderCommand, &hylios::registerFigureCommand,
+        &hylios::registerGalleryCommand, &hylios::registerImageDiffCommand,
+        &hylios::registerFitCommand, &hylios::registerValidateCommand,
+        &hylios::registerSweepCommand})
+    registerCommand(app);
   // Under MPI only the commands that divide their work run; the others would compute the same
   // thing on every rank (docs/cluster.md).
   auto isCommand = [&app](const char* name) {
