@@ -37,16 +37,7 @@ std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
-/// The message of what `f` throws ("" when it does not throw).
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 TEST(SweepCases, RangeIncludesHiOnTheGridWithRoundTrippingValues) {
   // 0.2 + 3 × 0.1 is 0.5000000000000001 in doubles: values are rounded to 12 digits.

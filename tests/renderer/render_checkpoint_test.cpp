@@ -14,6 +14,7 @@
 #include "renderer/scene/scene_file.h"
 #include "renderer/tracing/integrator.h"
 #include "skin/core/thread_limit.h"
+#include "tests/support/error_message.h"
 #include "tests/support/test_scenes.h"
 
 using namespace hylios;
@@ -95,17 +96,6 @@ std::string readBytes(const fs::path& path) {
 
 void writeBytes(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
-}
-
-/// The message of the std::runtime_error that f throws ("" when it throws none).
-template <typename F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace
@@ -191,25 +181,35 @@ TEST(RenderCheckpoint, DamagedFilesAreRefusedSayingWhy) {
   writeRenderCheckpoint(state, identity(), stopped);
   const std::string good = readBytes(state);
 
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::errorOf<std::runtime_error>([&] {
               readRenderCheckpoint(scratch("absent.hylios-state"));
             }).find("no render checkpoint"),
             std::string::npos);
   std::string flipped = good;
   flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
   writeBytes(state, flipped);
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("checksum"), std::string::npos);
+  EXPECT_NE(
+      test::errorOf<std::runtime_error>([&] { readRenderCheckpoint(state); }).find("checksum"),
+      std::string::npos);
   writeBytes(state, good.substr(0, good.size() - 100));
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("checksum"), std::string::npos);
+  EXPECT_NE(
+      test::errorOf<std::runtime_error>([&] { readRenderCheckpoint(state); }).find("checksum"),
+      std::string::npos);
   writeBytes(state, good.substr(0, 30));
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("truncated"), std::string::npos);
+  EXPECT_NE(
+      test::errorOf<std::runtime_error>([&] { readRenderCheckpoint(state); }).find("truncated"),
+      std::string::npos);
   writeBytes(state, "P6\n24 24\n255\n" + good.substr(13));
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("not a hylios render checkpoint"),
+  EXPECT_NE(test::errorOf<std::runtime_error>([&] {
+              readRenderCheckpoint(state);
+            }).find("not a hylios render checkpoint"),
             std::string::npos);
   std::string version = good;
   version[25] = 3;  // the u32 after the 25-byte magic
   writeBytes(state, version);
-  EXPECT_NE(errorOf([&] { readRenderCheckpoint(state); }).find("format version 3"),
+  EXPECT_NE(test::errorOf<std::runtime_error>([&] {
+              readRenderCheckpoint(state);
+            }).find("format version 3"),
             std::string::npos);
   writeBytes(state, good);
   EXPECT_EQ(readRenderCheckpoint(state).samplesPerPixelDone, 5);
@@ -226,7 +226,8 @@ TEST(RenderCheckpoint, ForeignCheckpointsAreRefusedNamingEachDifference) {
   other.options = "--skin-model=table";
   other.sceneContentHash ^= 1;
   other.channelWavelengthsNm.pop_back();
-  const std::string message = errorOf([&] { readMatchingCheckpoint(state, other); });
+  const std::string message =
+      test::errorOf<std::runtime_error>([&] { readMatchingCheckpoint(state, other); });
   for (const char* what :
        {"seed: checkpoint 1, this run 7", "spp target: checkpoint 12, this run 64",
         "resolution: checkpoint 24x24, this run 32x24", "options: checkpoint '--skin-model=walk'",

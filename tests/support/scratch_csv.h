@@ -1,7 +1,6 @@
 // Test support for the command tests: a scratch folder removed afterwards (and one holding a
-// command's CSV and plot), a CSV reader, a
-// runner that parses one command line with a command registered on a fresh CLI11 app, and a check
-// that a command fails with a message naming the problem.
+// command's CSV and plot), a CSV reader, runners that parse one command line with a command
+// registered on a fresh CLI11 app, and (tests/support/error_message.h) the checks of failures.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
@@ -14,6 +13,8 @@
 #include <unistd.h>
 #include <utility>
 #include <vector>
+
+#include "tests/support/error_message.h"
 
 namespace hylios::test {
 
@@ -98,17 +99,6 @@ inline std::size_t columnOf(const std::vector<std::string>& header, const std::s
   for (std::size_t i = 0; i < header.size(); ++i)
     if (header[i] == name) return i;
   return header.size();
-}
-
-/// Expects run() to throw an E whose message contains `needle`.
-template <typename E = std::exception, typename Run>
-void expectThrowMentioning(const Run& run, const std::string& needle) {
-  try {
-    run();
-    ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'";
-  } catch (const E& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
 }
 
 }  // namespace hylios::test
