@@ -9,11 +9,11 @@
 #include <memory>
 #include <set>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "renderer/image/colour_tables.h"
 #include "renderer/image/film_output.h"
 #include "renderer/image/preview_image.h"
+#include "tests/support/test_folder.h"
 
 namespace {
 
@@ -25,13 +25,7 @@ using hylios::FilmDesc;
 /// A fresh, empty folder per test, removed afterwards.
 class FilmOutputTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = fs::temp_directory_path() /
-              ("hylios_film_output_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
+  void SetUp() override { folder_ = hylios::test::freshTestFolder("hylios_film_output_"); }
   void TearDown() override { fs::remove_all(folder_); }
   std::set<fs::path> folderContents() const {
     std::set<fs::path> files;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "skin/spectral_database.h"
+#include "tests/support/test_folder.h"
 
 namespace hylios::skin {
 namespace {
@@ -176,9 +177,7 @@ class SpectralDatabaseLoadTest : public ::testing::Test {
  protected:
   fs::path dir_;
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("hylios_spectral_db_") + info->name());
-    fs::remove_all(dir_);
+    dir_ = hylios::test::freshTestFolder("hylios_spectral_db_");
     fs::copy(spectraDir(), dir_, fs::copy_options::recursive);
   }
   void TearDown() override { fs::remove_all(dir_); }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "skin/spectral_table.h"
+#include "tests/support/test_folder.h"
 
 namespace hylios::skin {
 namespace {
@@ -16,12 +17,7 @@ namespace fs = std::filesystem;
 class SpectralTableTest : public ::testing::Test {
  protected:
   fs::path dir_;
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("hylios_spectral_table_") + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = hylios::test::freshTestFolder("hylios_spectral_table_"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   fs::path write(const std::string& name, const std::string& text) const {
