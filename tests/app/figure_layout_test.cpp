@@ -63,7 +63,7 @@ TEST(FigureLayout, Figure1OrdersByWavelength) {
             (std::vector<std::string>{"figure01_uv365", "figure01_visible", "figure01_ir1100"}));
   EXPECT_EQ(layout.captions, (std::vector<std::string>{"365 nm", "visible 380–780 nm", "1100 nm"}));
   EXPECT_TRUE(layout.bandInCaptions);
-  EXPECT_EQ(layout.title, "specimen S1 · freckles 2 /cm²");
+  EXPECT_EQ(layout.title, "specimen S1 · freckles 1 /cm²");
 }
 
 /// A one-sphere scene with a skin material; `material` is extra text for its [[material]].
