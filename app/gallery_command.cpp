@@ -20,6 +20,7 @@
 #include "app/paper_figures.h"
 #include "app/render_options.h"
 #include "renderer/scene/data_paths.h"
+#include "renderer/scene/sampler_kind.h"
 #include "skin/core/atomic_file.h"
 #include "skin/core/enum_names.h"
 #include "skin/estimator.h"
@@ -62,6 +63,7 @@ std::string settingsText(const RenderCommandOptions& o) {
   if (o.threads > 0) text += fmt::format(" --threads {}", o.threads);
   if (o.skinMode)
     text += " --skin-model " + std::string(enumName(*o.skinMode, skin::kSkinModeNames));
+  if (o.sampler) text += " --sampler " + std::string(enumName(*o.sampler, kSamplerNames));
   if (o.estimator)
     text += " --estimator " + std::string(enumName(*o.estimator, skin::kEstimatorNames));
   return text;
