@@ -62,12 +62,9 @@ TEST_P(ExponentialPolarChi2, SamplesMatchDensityAndMean) {
   const double t = GetParam();
   Rng rng(31, static_cast<std::uint64_t>(-std::log(t) * 1000));
   const std::size_t n = 500000;
-  std::vector<double> thetas(n);
-  double sum = 0;
-  for (double& theta : thetas) {
-    theta = sampleExponentialPolar(t, rng.uniform());
-    sum += theta;
-  }
+  const std::vector<double> thetas =
+      test::drawSamples(n, [&] { return sampleExponentialPolar(t, rng.uniform()); });
+  const double sampleMean = test::mean(thetas);
   const auto density = [t](double x) { return exponentialPolarDensity(t, x); };
   const double end = supportEnd(t);
   const auto edges = test::equalProbabilityEdges(density, 0.0, end, 50);
@@ -78,11 +75,11 @@ TEST_P(ExponentialPolarChi2, SamplesMatchDensityAndMean) {
   const double second =
       test::integrate([&](double x) { return x * x * density(x); }, 0.0, end, 1e-15, 64);
   const double standardError = std::sqrt((second - mean * mean) / static_cast<double>(n));
-  EXPECT_NEAR(sum / static_cast<double>(n), mean, 4 * standardError) << "θo = " << t;
+  EXPECT_NEAR(sampleMean, mean, 4 * standardError) << "θo = " << t;
   if (t <= 0.01 * kDeg) {
     // As θo -> 0, θ/θo tends to Gamma(2): mean 2θo (the correction is −2θo³, negligible here).
     EXPECT_NEAR(mean / (2 * t), 1.0, 1e-6);
-    EXPECT_NEAR(sum / static_cast<double>(n) / (2 * t), 1.0, 4 * standardError / (2 * t));
+    EXPECT_NEAR(sampleMean / (2 * t), 1.0, 4 * standardError / (2 * t));
   }
 }
 

@@ -59,17 +59,13 @@ TEST_P(HenyeyGreensteinChi2, CosineMatchesDensity) {
   const double g = GetParam();
   Rng rng(17, static_cast<std::uint64_t>(1000 * (g + 1)));
   const int n = 1000000;
-  std::vector<double> mus(n);
-  double sum = 0;
-  for (double& mu : mus) {
-    mu = sampleHenyeyGreensteinCos(g, rng.uniform());
-    sum += mu;
-  }
+  const std::vector<double> mus =
+      test::drawSamples(n, [&] { return sampleHenyeyGreensteinCos(g, rng.uniform()); });
   const auto density = [g](double mu) { return henyeyGreensteinDensity(g, mu); };
   const auto edges = test::equalProbabilityEdges(density, -1.0, 1.0, 50);
   EXPECT_TRUE(test::chi2Accepts(test::chi2Test1D(mus, density, edges))) << "g = " << g;
   // Mean cosine g: Var[μ] <= 1, so se <= 1/sqrt(n) = 1e-3; 4σ.
-  EXPECT_NEAR(sum / n, g, 4e-3) << "g = " << g;
+  EXPECT_NEAR(test::mean(mus), g, 4e-3) << "g = " << g;
 }
 
 INSTANTIATE_TEST_SUITE_P(AsymmetryValues, HenyeyGreensteinChi2,

@@ -184,6 +184,21 @@ inline Chi2Result chi2FromCounts(const std::vector<double>& observed,
 /// `bins` + 1 edges on [lo, hi] whose bins each hold about the same probability under `density`
 /// (found from a fine cumulative table; the expected counts are integrated afresh per bin later,
 /// so the edges need not be exact). Coinciding edges (where the density vanishes) are dropped.
+/// `n` values of `draw()`, drawn in order.
+template <class Draw>
+std::vector<double> drawSamples(std::size_t n, Draw&& draw) {
+  std::vector<double> samples(n);
+  for (double& x : samples) x = draw();
+  return samples;
+}
+
+/// The arithmetic mean (summed in order).
+inline double mean(const std::vector<double>& values) {
+  double sum = 0;
+  for (double x : values) sum += x;
+  return sum / static_cast<double>(values.size());
+}
+
 template <class Density>
 std::vector<double> equalProbabilityEdges(Density&& density, double lo, double hi, int bins) {
   const int pieces = 64 * bins;
