@@ -36,6 +36,13 @@ class SpectralTableTest : public ::testing::Test {
     }
     return "";
   }
+  /// loadError(file), expected to name `file` and `line` ("file:line").
+  static std::string errorAt(const fs::path& file, int line) {
+    const std::string message = loadError(file);
+    EXPECT_NE(message.find(file.string() + ":" + std::to_string(line)), std::string::npos)
+        << message;
+    return message;
+  }
 };
 
 TEST_F(SpectralTableTest, ReadsColumnsAndInterpolatesLinearly) {
@@ -69,9 +76,7 @@ TEST_F(SpectralTableTest, RefusesWavelengthsOutsideTheTable) {
 }
 
 TEST_F(SpectralTableTest, NonNumericFieldNamesFileAndLine) {
-  const fs::path file = write("bad.csv", "nm,v\n400,1\n500,abc\n");
-  const std::string message = loadError(file);
-  EXPECT_NE(message.find(file.string() + ":3"), std::string::npos) << message;
+  const std::string message = errorAt(write("bad.csv", "nm,v\n400,1\n500,abc\n"), 3);
   EXPECT_NE(message.find("abc"), std::string::npos) << message;
 }
 
@@ -82,16 +87,13 @@ TEST_F(SpectralTableTest, NonFiniteAndEmptyFieldsAreErrors) {
 }
 
 TEST_F(SpectralTableTest, DescendingWavelengthNamesFileAndLine) {
-  const fs::path file = write("desc.csv", "nm,v\n400,1\n500,2\n450,3\n");
-  const std::string message = loadError(file);
-  EXPECT_NE(message.find(file.string() + ":4"), std::string::npos) << message;
+  const std::string message = errorAt(write("desc.csv", "nm,v\n400,1\n500,2\n450,3\n"), 4);
   EXPECT_NE(message.find("does not ascend"), std::string::npos) << message;
 }
 
 TEST_F(SpectralTableTest, DuplicateWavelengthsAreRejectedOrAveraged) {
   const fs::path file = write("dup.csv", "nm,v,w\n400,1,5\n500,2,6\n500,4,8\n500,6,10\n600,3,7\n");
-  const std::string message = loadError(file);
-  EXPECT_NE(message.find(file.string() + ":4"), std::string::npos) << message;
+  errorAt(file, 4);
   const SpectralTable t = SpectralTable::loadCsv(file, DuplicateWavelengths::Average);
   ASSERT_EQ(t.rowCount(), 3u);
   EXPECT_DOUBLE_EQ(t.interpolate(0, 500.0), 4.0);  // (2 + 4 + 6)/3
@@ -100,7 +102,7 @@ TEST_F(SpectralTableTest, DuplicateWavelengthsAreRejectedOrAveraged) {
 
 TEST_F(SpectralTableTest, NanRowsAreRejectedOrDropped) {
   const fs::path file = write("nanrows.csv", "nm,v,w\n400,1,2\n500,NaN,3\n600,5,6\n");
-  EXPECT_NE(loadError(file).find(file.string() + ":3"), std::string::npos);
+  errorAt(file, 3);
   const SpectralTable t =
       SpectralTable::loadCsv(file, DuplicateWavelengths::Reject, MissingValues::DropRow);
   ASSERT_EQ(t.rowCount(), 2u);
@@ -116,8 +118,7 @@ TEST_F(SpectralTableTest, NanRowsAreRejectedOrDropped) {
 }
 
 TEST_F(SpectralTableTest, WrongFieldCountNamesFileAndLine) {
-  const fs::path file = write("short.csv", "nm,v,w\n400,1,2\n500,3\n");
-  EXPECT_NE(loadError(file).find(file.string() + ":3"), std::string::npos);
+  errorAt(write("short.csv", "nm,v,w\n400,1,2\n500,3\n"), 3);
 }
 
 TEST_F(SpectralTableTest, MissingOrEmptyFileNamesTheFile) {
