@@ -41,6 +41,11 @@ int lineOf(const std::string& text, const std::string& needle) {
   return line;
 }
 
+/// "bad.toml:LINE", LINE the line of `text` holding `needle`.
+std::string badTomlAt(const std::string& text, const std::string& needle) {
+  return "bad.toml:" + std::to_string(lineOf(text, needle));
+}
+
 /// The SpecimenError message of parsing `text` as "bad.toml" (empty if it parses).
 std::string parseError(const std::string& text) {
   try {
@@ -138,16 +143,13 @@ TEST(Specimen, UnknownNameSaysWhichFileIsMissing) {
 
 TEST(SpecimenErrors, UnknownKeyWithPosition) {
   const std::string text = editedS1("keratin_percent = 65.0", "keratin_percent = 65.0\nhair = 1");
-  const int line = lineOf(text, "hair = 1");
-  EXPECT_EQ(
-      parseError(text).rfind("bad.toml:" + std::to_string(line) + ":1: unknown key 'hair'", 0), 0u)
+  EXPECT_EQ(parseError(text).rfind(badTomlAt(text, "hair = 1") + ":1: unknown key 'hair'", 0), 0u)
       << parseError(text);
 }
 
 TEST(SpecimenErrors, WrongUnitSuffixNamesTheExpectedKey) {
   const std::string text = editedS1("thickness_cm = 0.001", "thickness_mm = 0.01");
-  const int line = lineOf(text, "thickness_mm");
-  EXPECT_EQ(parseError(text), "bad.toml:" + std::to_string(line) +
+  EXPECT_EQ(parseError(text), badTomlAt(text, "thickness_mm") +
                                   ":1: unknown key 'thickness_mm' (expected thickness_cm) in "
                                   "[stratum_corneum]");
   const std::string ratio = editedS1("blood_percent = 0.2", "blood_fraction = 0.002");
@@ -158,22 +160,19 @@ TEST(SpecimenErrors, WrongUnitSuffixNamesTheExpectedKey) {
 
 TEST(SpecimenErrors, NegativeThickness) {
   const std::string text = editedS1("thickness_cm = 0.02 ", "thickness_cm = -0.02");
-  const int line = lineOf(text, "thickness_cm = -0.02");
   EXPECT_EQ(parseError(text),
-            "bad.toml:" + std::to_string(line) + ":16: 'thickness_cm' = -0.02 must be >= 0");
+            badTomlAt(text, "thickness_cm = -0.02") + ":16: 'thickness_cm' = -0.02 must be >= 0");
 }
 
 TEST(SpecimenErrors, PercentAboveHundred) {
   const std::string text = editedS1("water_percent = 60.0", "water_percent = 160.0");
-  const int line = lineOf(text, "water_percent = 160.0");
-  EXPECT_EQ(parseError(text),
-            "bad.toml:" + std::to_string(line) + ":17: 'water_percent' = 160 must be in [0, 100]");
+  EXPECT_EQ(parseError(text), badTomlAt(text, "water_percent = 160.0") +
+                                  ":17: 'water_percent' = 160 must be in [0, 100]");
 }
 
 TEST(SpecimenErrors, WrongType) {
   const std::string text = editedS1("melanosome_percent = 1.0", "melanosome_percent = \"1\"");
-  const int line = lineOf(text, "melanosome_percent = \"1\"");
-  EXPECT_EQ(parseError(text), "bad.toml:" + std::to_string(line) +
+  EXPECT_EQ(parseError(text), badTomlAt(text, "melanosome_percent = \"1\"") +
                                   ":22: 'melanosome_percent' must be a number, got a string");
   const std::string arrangement = editedS1("\"light_complexes\"", "2");
   EXPECT_NE(parseError(arrangement).find("'arrangement' must be a string, got an integer"),
@@ -187,8 +186,7 @@ TEST(SpecimenErrors, IntegersAreAcceptedAsNumbers) {
 
 TEST(SpecimenErrors, MissingKeyPointsAtItsTable) {
   const std::string text = editedS1("lipid_percent = 17.33", "");
-  const int line = lineOf(text, "[reticular_dermis]");
-  EXPECT_EQ(parseError(text), "bad.toml:" + std::to_string(line) +
+  EXPECT_EQ(parseError(text), badTomlAt(text, "[reticular_dermis]") +
                                   ":1: missing key 'lipid_percent' in [reticular_dermis]");
   const std::string noName = editedS1("name = \"S1\"", "");
   EXPECT_NE(parseError(noName).find("bad.toml:1:1: missing key 'name' in the top level"),
@@ -222,8 +220,7 @@ TEST(SpecimenErrors, NonFiniteAndBadArrangementAndAxes) {
 
 TEST(SpecimenErrors, TomlSyntaxErrorHasPosition) {
   const std::string text = editedS1("water_reduction_percent = 0.0", "water_reduction_percent = ");
-  const int line = lineOf(text, "water_reduction_percent =");
-  EXPECT_EQ(parseError(text).rfind("bad.toml:" + std::to_string(line) + ":", 0), 0u)
+  EXPECT_EQ(parseError(text).rfind(badTomlAt(text, "water_reduction_percent =") + ":", 0), 0u)
       << parseError(text);
 }
 
