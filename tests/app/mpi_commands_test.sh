@@ -20,7 +20,8 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 # --bind-to none: Open MPI binds each rank to one core by default (np <= 2), which would pin a
 # rank and its threads to a core other processes of a shared machine also use.
-mpirun=(mpirun --allow-run-as-root --oversubscribe --bind-to none)
+# HYLIOS_MPIRUN: the launcher CMake found (tests/CMakeLists.txt), else mpirun from PATH.
+mpirun=("${HYLIOS_MPIRUN:-mpirun}" --allow-run-as-root --oversubscribe --bind-to none)
 fail() {
   echo "FAIL: $*" >&2
   exit 1
