@@ -20,9 +20,9 @@ namespace {
 
 int gRank = 0;
 int gSize = 1;
-bool gStarted = false;  ///< MPI_Init_thread was called here (and MPI_Finalize is due)
 
 #if HYLIOS_HAVE_MPI
+bool gStarted = false;               ///< MPI_Init_thread was called here (and MPI_Finalize is due)
 MPI_Comm gFailComm = MPI_COMM_NULL;  ///< a copy of the world for failCommand's barrier only
 
 /// Whether a launcher started this process (mpirun/mpiexec of Open MPI or MPICH, srun with PMI or
@@ -67,9 +67,9 @@ void checkFitsInt(std::size_t bytes, const char* what) {
     throw std::length_error(std::string(what) + ": " + std::to_string(bytes) +
                             " bytes exceed one MPI message (2 GiB)");
 }
-#endif
 
 void sleepBriefly() { std::this_thread::sleep_for(std::chrono::milliseconds(1)); }
+#endif
 
 }  // namespace
 
@@ -94,6 +94,12 @@ MpiSession::MpiSession(int& argc, char**& argv) {
 #else
   (void)argc;
   (void)argv;
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  if (!size) size = std::getenv("PMI_SIZE");
+  if (size && std::atoi(size) > 1)
+    std::cerr << "hylios: warning: started as one of " << size
+              << " MPI processes, but built without MPI (HYLIOS_MPI=OFF): every process runs the "
+                 "whole command\n";
 #endif
 }
 
