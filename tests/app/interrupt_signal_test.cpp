@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +19,19 @@ void (*handlerOf(int signal))(int) {
   struct sigaction current;
   sigaction(signal, nullptr, &current);
   return current.sa_handler;
+}
+
+/// What an InterruptSignalScope prints on stderr when `signal` arrives (during an exit-table
+/// build when `building`).
+std::string acknowledgementOf(int signal, bool building) {
+  testing::internal::CaptureStderr();
+  {
+    std::optional<hylios::ExitTableCache::BuildInProgress> build;
+    if (building) build.emplace();
+    const InterruptSignalScope scope;
+    EXPECT_EQ(std::raise(signal), 0);
+  }
+  return testing::internal::GetCapturedStderr();
 }
 
 }  // namespace
@@ -68,22 +82,11 @@ TEST(InterruptSignalScope, ExitStatusAndNames) {
 // Issue 13 row 8: the first signal is acknowledged at once, and during an exit-table build it
 // says that the table is finished (and cached) before the command stops.
 TEST(InterruptSignalScope, SaysAtOnceWhatItFinishesBeforeStopping) {
-  testing::internal::CaptureStderr();
-  {
-    const hylios::ExitTableCache::BuildInProgress building;
-    const InterruptSignalScope scope;
-    ASSERT_EQ(std::raise(SIGINT), 0);
-  }
-  const std::string duringBuild = testing::internal::GetCapturedStderr();
+  const std::string duringBuild = acknowledgementOf(SIGINT, true);
   EXPECT_NE(duringBuild.find("SIGINT received; finishing the exit table being built"),
             std::string::npos)
       << duringBuild;
-  testing::internal::CaptureStderr();
-  {
-    const InterruptSignalScope scope;
-    ASSERT_EQ(std::raise(SIGTERM), 0);
-  }
-  const std::string otherwise = testing::internal::GetCapturedStderr();
+  const std::string otherwise = acknowledgementOf(SIGTERM, false);
   EXPECT_NE(otherwise.find("SIGTERM received; stopping after the current sample pass"),
             std::string::npos)
       << otherwise;
