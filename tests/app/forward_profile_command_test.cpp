@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "tests/support/command_reference.h"
@@ -21,11 +22,10 @@ TEST(ForwardProfileCommand, RowsAddUpToTheEpidermisTransmittance) {
   const auto rows = test::readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 9);
   const auto& header = rows[0];
-  ASSERT_EQ(header.size(), 7u);
-  EXPECT_EQ(header[0], "polar_lower_deg");
-  EXPECT_EQ(header[3], "transmitted_per_sr");
-  EXPECT_EQ(header[5], "relative_to_normal");
-  EXPECT_EQ(header[6], "relative_to_normal_stderr");
+  ASSERT_EQ(header,
+            (std::vector<std::string>{"polar_lower_deg", "polar_upper_deg", "solid_angle_sr",
+                                      "transmitted_per_sr", "transmitted_per_sr_stderr",
+                                      "relative_to_normal", "relative_to_normal_stderr"}));
   EXPECT_EQ(std::stod(rows[1][test::columnOf(header, "relative_to_normal")]), 1.0);
   double transmitted = 0;
   for (std::size_t r = 1; r < rows.size(); ++r) {

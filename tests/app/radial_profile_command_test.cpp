@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "skin/core/constants.h"
@@ -24,10 +25,9 @@ TEST(RadialProfileCommand, AnnuliAddUpToTheSubsurfaceReflectance) {
   const auto rows = test::readCsv(outputs.csv);
   ASSERT_EQ(rows.size(), 1u + 20);
   const auto& header = rows[0];
-  ASSERT_EQ(header.size(), 7u);
-  EXPECT_EQ(header[0], "inner_radius_cm");
-  EXPECT_EQ(header[2], "annulus_area_cm2");
-  EXPECT_EQ(header[5], "reflectance_per_cm2");
+  ASSERT_EQ(header, (std::vector<std::string>{
+                        "inner_radius_cm", "outer_radius_cm", "annulus_area_cm2", "fraction",
+                        "fraction_stderr", "reflectance_per_cm2", "reflectance_per_cm2_stderr"}));
   double subsurface = 0;
   for (std::size_t r = 1; r < rows.size(); ++r) {
     ASSERT_EQ(rows[r].size(), header.size());
