@@ -13,8 +13,6 @@
 #include "tests/support/file_bytes.h"
 #include "tests/support/scratch_csv.h"
 
-using hylios::kPi;
-
 namespace hylios {
 namespace {
 

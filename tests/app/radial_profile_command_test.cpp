@@ -11,8 +11,6 @@
 #include "tests/support/command_reference.h"
 #include "tests/support/scratch_csv.h"
 
-using hylios::kPi;
-
 namespace hylios {
 namespace {
 
