@@ -29,41 +29,47 @@ std::vector<std::string> stemsInOrder(const std::vector<SceneDesc>& scenes,
   return stems;
 }
 
+/// The layout of the paper figure's scene files, given in `files` order, against what it should be.
+struct PaperFigure {
+  std::vector<std::string> files;     ///< in the order a user (or the shell) gives them
+  std::vector<std::string> stems;     ///< the panels' scenes, left to right
+  std::vector<std::string> captions;  ///< the panels' captions, left to right
+  std::string title;
+};
+
+FigureLayout expectLayout(const PaperFigure& figure) {
+  const auto scenes = load(figure.files);
+  const FigureLayout layout = layoutFigure(scenes);
+  EXPECT_EQ(stemsInOrder(scenes, layout), figure.stems);
+  EXPECT_EQ(layout.captions, figure.captions);
+  EXPECT_EQ(layout.title, figure.title);
+  return layout;
+}
+
 TEST(FigureLayout, Figure13OrdersByMelaninNotByFileName) {
   // The shell's order of figure13_*.toml: 1.5, 30, 7.
-  const auto scenes =
-      load({"figure13_melanin1.5.toml", "figure13_melanin30.toml", "figure13_melanin7.toml"});
-  const FigureLayout layout = layoutFigure(scenes);
-  EXPECT_EQ(
-      stemsInOrder(scenes, layout),
-      (std::vector<std::string>{"figure13_melanin1.5", "figure13_melanin7", "figure13_melanin30"}));
-  EXPECT_EQ(layout.captions,
-            (std::vector<std::string>{"epidermal melanin 1.5 %", "epidermal melanin 7 %",
-                                      "epidermal melanin 30 %"}));
-  EXPECT_EQ(layout.title, "365 nm · specimen S1");
+  const FigureLayout layout = expectLayout(
+      {{"figure13_melanin1.5.toml", "figure13_melanin30.toml", "figure13_melanin7.toml"},
+       {"figure13_melanin1.5", "figure13_melanin7", "figure13_melanin30"},
+       {"epidermal melanin 1.5 %", "epidermal melanin 7 %", "epidermal melanin 30 %"},
+       "365 nm · specimen S1"});
   EXPECT_FALSE(layout.bandInCaptions);
 }
 
 TEST(FigureLayout, Figure14OrdersByDehydrationAndSharesTheMelanin) {
-  const auto scenes =
-      load({"figure14_water40.toml", "figure14_water0.toml", "figure14_water20.toml"});
-  const FigureLayout layout = layoutFigure(scenes);
-  EXPECT_EQ(stemsInOrder(scenes, layout),
-            (std::vector<std::string>{"figure14_water0", "figure14_water20", "figure14_water40"}));
-  EXPECT_EQ(layout.captions,
-            (std::vector<std::string>{"water −0 %", "water −20 %", "water −40 %"}));
-  EXPECT_EQ(layout.title, "1650 nm · specimen S1 · epidermal melanin 1.5 %");
+  expectLayout({{"figure14_water40.toml", "figure14_water0.toml", "figure14_water20.toml"},
+                {"figure14_water0", "figure14_water20", "figure14_water40"},
+                {"water −0 %", "water −20 %", "water −40 %"},
+                "1650 nm · specimen S1 · epidermal melanin 1.5 %"});
 }
 
 TEST(FigureLayout, Figure1OrdersByWavelength) {
-  const auto scenes =
-      load({"figure01_ir1100.toml", "figure01_visible.toml", "figure01_uv365.toml"});
-  const FigureLayout layout = layoutFigure(scenes);
-  EXPECT_EQ(stemsInOrder(scenes, layout),
-            (std::vector<std::string>{"figure01_uv365", "figure01_visible", "figure01_ir1100"}));
-  EXPECT_EQ(layout.captions, (std::vector<std::string>{"365 nm", "visible 380–780 nm", "1100 nm"}));
+  const FigureLayout layout =
+      expectLayout({{"figure01_ir1100.toml", "figure01_visible.toml", "figure01_uv365.toml"},
+                    {"figure01_uv365", "figure01_visible", "figure01_ir1100"},
+                    {"365 nm", "visible 380–780 nm", "1100 nm"},
+                    "specimen S1 · freckles 1 /cm²"});
   EXPECT_TRUE(layout.bandInCaptions);
-  EXPECT_EQ(layout.title, "specimen S1 · freckles 1 /cm²");
 }
 
 /// A one-sphere scene with a skin material; `material` is extra text for its [[material]].
