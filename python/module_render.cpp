@@ -17,6 +17,7 @@
 #include "python/interruptible.h"
 #include "python/module.h"
 #include "python/numpy_conversions.h"
+#include "renderer/scene/sampler_kind.h"
 #include "renderer/scene/scene.h"
 #include "renderer/scene/scene_file.h"
 #include "renderer/tracing/render_job.h"
@@ -31,7 +32,7 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
                  std::optional<int> height, std::optional<std::uint64_t> seed, int threads,
                  std::optional<std::string> skinMode, std::optional<double> epsilon,
                  std::optional<double> noiseTarget, std::optional<std::string> estimator,
-                 bool progress, bool verbose) {
+                 std::optional<std::string> sampler, bool progress, bool verbose) {
   requireThreads(threads);
   RenderSettings settings;
   if (skinMode) settings.skinMode = skinModeNamed(*skinMode);
@@ -46,6 +47,7 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
     throw std::invalid_argument("noise_target must be a positive relative noise");
   settings.noiseTarget = noiseTarget;
   if (estimator) settings.estimator = estimatorNamed(*estimator);
+  if (sampler) settings.sampler = parseEnum(*sampler, kSamplerNames, "sampler");
   if (progress) settings.progress = progressBarFactory();
   SceneDesc scene;
   RenderResult result;
@@ -80,8 +82,8 @@ py::tuple render(const std::string& scenePath, std::optional<int> spp, std::opti
 void bindRender(py::module_& m) {
   m.def("render", &render, py::arg("scene_path"), py::arg("spp"), py::arg("width"),
         py::arg("height"), py::arg("seed"), py::arg("threads"), py::arg("skin_model"),
-        py::arg("epsilon"), py::arg("noise_target"), py::arg("estimator"), py::arg("progress"),
-        py::arg("verbose"), "See hylios.render");
+        py::arg("epsilon"), py::arg("noise_target"), py::arg("estimator"), py::arg("sampler"),
+        py::arg("progress"), py::arg("verbose"), "See hylios.render");
   // The renderer has both since issues 11 and 12; the package still asks (python/hylios).
   m.attr("render_has_estimator") = true;
   m.attr("render_has_noise_target") = true;

@@ -297,7 +297,8 @@ def radial_profile(specimen, wavelength_nm=550, angle_deg=0, rays=1000000, seed=
 
 
 def render(scene_path, spp=None, noise_target=None, resolution=None, seed=None, threads=0,
-           skin_model=None, epsilon=None, estimator=None, progress=False, verbose=False):
+           skin_model=None, epsilon=None, estimator=None, sampler=None, progress=False,
+           verbose=False):
     """Renders a scene file (``hylios render``) and returns ``(image, channel_wavelengths_nm)``.
 
     image: float32 array [height, width, channel] of the film's per-channel mean radiance (what
@@ -305,7 +306,8 @@ def render(scene_path, spp=None, noise_target=None, resolution=None, seed=None, 
     or "WxH"), seed, skin_model ("walk"/"table") and epsilon override the scene's values when
     given (None: the scene's, like the command without the option); so does estimator
     ("spectral" or "per-wavelength") where the renderer has the choice
-    (``hylios._hylios.render_has_estimator``). threads: 0 = all cores;
+    (``hylios._hylios.render_has_estimator``), and sampler ("sobol" or "independent", the camera
+    paths' numbers, ``--sampler``). threads: 0 = all cores;
     progress: the command's progress bar on a terminal; verbose: the command's report on stdout.
     noise_target: stop once the median relative per-pixel noise of every band is below it (spp
     then the most passes; renderer/image/render_noise.h), where the renderer has a noise target
@@ -333,6 +335,7 @@ def render(scene_path, spp=None, noise_target=None, resolution=None, seed=None, 
                                         None if epsilon is None else float(epsilon),
                                         None if noise_target is None else float(noise_target),
                                         None if estimator is None else str(estimator),
+                                        None if sampler is None else str(sampler),
                                         bool(progress), bool(verbose))
     return image, wavelengths
 

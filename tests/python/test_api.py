@@ -109,6 +109,13 @@ def test_render_returns_image_and_wavelengths():
         else:
             with pytest.raises(ValueError):
                 hylios.render(scene, spp=2, resolution=(20, 12), estimator=estimator)
+    # The camera paths' numbers (--sampler): sobol by default, independent on request.
+    independent, _ = hylios.render(scene, spp=2, resolution=(20, 12), seed=3, sampler="independent")
+    sobol, _ = hylios.render(scene, spp=2, resolution=(20, 12), seed=3, sampler="sobol")
+    assert (sobol == image).all() and not (independent == image).all()
+    assert np.isfinite(independent).all() and independent.max() > 0
+    with pytest.raises(ValueError, match="sampler"):
+        hylios.render(scene, spp=2, resolution=(20, 12), sampler="halton")
 
 
 def test_gil_is_released_during_a_call():
