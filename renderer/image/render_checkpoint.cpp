@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "renderer/scene/sampler_kind.h"
 #include "skin/core/atomic_file.h"
 #include "skin/core/content_hash.h"
 
@@ -16,7 +17,8 @@ namespace fs = std::filesystem;
 
 constexpr char kMagic[] = "hylios render checkpoint\n";
 constexpr std::size_t kMagicSize = sizeof kMagic - 1;
-constexpr std::uint32_t kVersion = 2;  // 2: odd-sample sums and counts (the noise estimate)
+// 2: odd-sample sums and counts (the noise estimate); 3: the pixel sampler's name
+constexpr std::uint32_t kVersion = 3;
 
 /// Appends little-endian values to a byte buffer.
 class ByteWriter {
@@ -117,6 +119,7 @@ RenderIdentity renderIdentity(const SceneDesc& scene, const std::string& options
   identity.samplesPerPixelTarget = scene.film.samplesPerPixel;
   for (const BandDesc& band : scene.film.bands)
     for (const double nm : band.channelWavelengths()) identity.channelWavelengthsNm.push_back(nm);
+  identity.sampler = std::string(enumName(scene.integrator.sampler, kSamplerNames));
   return identity;
 }
 
@@ -142,6 +145,7 @@ std::vector<std::string> identityDifferences(const RenderIdentity& saved,
           std::to_string(current.samplesPerPixelTarget));
   compare(saved.channelWavelengthsNm == current.channelWavelengthsNm, "channel wavelengths (nm)",
           wavelengthList(saved.channelWavelengthsNm), wavelengthList(current.channelWavelengthsNm));
+  compare(saved.sampler == current.sampler, "sampler", saved.sampler, current.sampler);
   return differences;
 }
 
@@ -163,6 +167,7 @@ void writeRenderCheckpoint(const fs::path& path, const RenderIdentity& identity,
   out.u32(static_cast<std::uint32_t>(identity.samplesPerPixelTarget));
   out.u64(identity.channelWavelengthsNm.size());
   for (const double nm : identity.channelWavelengthsNm) out.f64(nm);
+  out.bytes(identity.sampler);
   out.u32(static_cast<std::uint32_t>(film.samplesPerPixelDone()));
   out.u64(film.sums().size());
   out.data().reserve(out.data().size() + film.sums().size() * 24 + 8);
@@ -211,6 +216,7 @@ RenderCheckpoint readRenderCheckpoint(const fs::path& path) {
   const std::uint64_t channels = body.u64();
   body.need(channels * 8, "the channel wavelengths");
   for (std::uint64_t c = 0; c < channels; ++c) id.channelWavelengthsNm.push_back(body.f64());
+  id.sampler = body.bytes();
   checkpoint.samplesPerPixelDone = static_cast<int>(body.u32());
   const std::uint64_t slots = body.u64();
   if (id.width <= 0 || id.height <= 0 || id.samplesPerPixelTarget <= 0 ||

@@ -2,11 +2,12 @@
 // beside its OpenEXR as "<out>.hylios-state" so that `hylios render --resume` can continue it to
 // the very image an uninterrupted render gives.
 //
-// File layout (version 2; integers and doubles little-endian, doubles as IEEE-754 binary64 bits):
+// File layout (version 3; integers and doubles little-endian, doubles as IEEE-754 binary64 bits):
 //   magic      25 bytes "hylios render checkpoint\n"
-//   version    u32 = 2
+//   version    u32 = 3
 //   identity   u64 scene content hash; u64 n + n bytes options; u64 seed; u32 width; u32 height;
-//              u32 spp target; u64 channel count C + C × f64 channel wavelengths (nm)
+//              u32 spp target; u64 channel count C + C × f64 channel wavelengths (nm);
+//              u64 n + n bytes the pixel sampler's name (version 3)
 //   state      u32 spp done; u64 slot count S (= width·height·C) + S × f64 radiance sums
 //              + S × u32 sample counts (Film::sums()/counts() order), then the same for the
 //              odd-index samples alone (Film::oddSums()/oddCounts(); version 2)
@@ -34,6 +35,9 @@ struct RenderIdentity {
   int width = 0, height = 0;
   int samplesPerPixelTarget = 0;  ///< the channel stratification depends on it
   std::vector<double> channelWavelengthsNm;
+  /// The sampler the samples were drawn with ("sobol", "independent"; renderer/scene/
+  /// sampler_kind.h), recorded whether it came from the scene, an option or the default.
+  std::string sampler;
 };
 
 /// The identity of rendering `scene` (settings already applied): hashes the bytes of scene.file

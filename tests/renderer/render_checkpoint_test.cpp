@@ -205,11 +205,11 @@ TEST(RenderCheckpoint, DamagedFilesAreRefusedSayingWhy) {
             }).find("not a hylios render checkpoint"),
             std::string::npos);
   std::string version = good;
-  version[25] = 3;  // the u32 after the 25-byte magic
+  version[25] = 2;  // the u32 after the 25-byte magic: version 2 did not record the sampler
   writeBytes(state, version);
   EXPECT_NE(test::errorOf<std::runtime_error>([&] {
               readRenderCheckpoint(state);
-            }).find("format version 3"),
+            }).find("format version 2"),
             std::string::npos);
   writeBytes(state, good);
   EXPECT_EQ(readRenderCheckpoint(state).samplesPerPixelDone, 5);
@@ -226,12 +226,14 @@ TEST(RenderCheckpoint, ForeignCheckpointsAreRefusedNamingEachDifference) {
   other.options = "--skin-model=table";
   other.sceneContentHash ^= 1;
   other.channelWavelengthsNm.pop_back();
+  other.sampler = "independent";
   const std::string message =
       test::errorOf<std::runtime_error>([&] { readMatchingCheckpoint(state, other); });
   for (const char* what :
        {"seed: checkpoint 1, this run 7", "spp target: checkpoint 12, this run 64",
         "resolution: checkpoint 24x24, this run 32x24", "options: checkpoint '--skin-model=walk'",
-        "scene file contents", "channel wavelengths"})
+        "scene file contents", "channel wavelengths",
+        "sampler: checkpoint sobol, this run independent"})
     EXPECT_NE(message.find(what), std::string::npos) << what << " missing in: " << message;
   EXPECT_TRUE(identityDifferences(identity(), identity()).empty());
 }
