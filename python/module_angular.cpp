@@ -55,7 +55,7 @@ py::dict brdf(const PySpecimen& s, const std::string& wavelengthText, double ang
   const std::vector<double> wavelengths = parseWavelengthList(wavelengthText);
   const std::vector<skin::SkinOptics> optics = opticsOf(s.specimen, wavelengths);
   const skin::DirectionBins bins(polarBins, azimuthBins);
-  skin::WalkRunOptions run{angleDeg, rays, seed};
+  skin::WalkRunOptions run{angleDeg, rays, seed, {}, {}};
   run.tally.polarBins = polarBins;
   run.tally.azimuthBins = azimuthBins;
   std::vector<skin::ReflectionDistribution> perWavelength(wavelengths.size());
@@ -118,7 +118,7 @@ py::dict radialProfile(const PySpecimen& s, double wavelengthNm, double angleDeg
   requireThreads(threads);
   const skin::SkinOptics optics =
       skin::computeSkinOptics(s.specimen, skin::SpectralDatabase::load(spectraDir()), wavelengthNm);
-  skin::WalkRunOptions run{angleDeg, rays, seed};
+  skin::WalkRunOptions run{angleDeg, rays, seed, {}, {}};
   run.tally.radialBins = bins;
   run.tally.maxRadiusCm = maxRadiusCm;
   skin::RadialProfile p;

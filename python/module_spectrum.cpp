@@ -60,7 +60,7 @@ py::dict spectrum(const PySpecimen& s, const std::string& wavelengthText, double
         std::unique_ptr<ProgressBar> bar;
         if (progress) bar = std::make_unique<ProgressBar>("spectrum " + s.specimen.name, n);
         if (spectral) {
-          skin::WalkRunOptions run{angleDeg, rays, seed};
+          skin::WalkRunOptions run{angleDeg, rays, seed, {}, {}};
           tallies = simulateTallies(skin::Estimator::Spectral, optics, run, stop, bar.get());
         } else if (estimator == skin::Estimator::Spectral) {
           tallies = spectralTableTallies(optics, angleDeg, rays, seed);
