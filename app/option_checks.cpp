@@ -65,7 +65,7 @@ bool finiteNumber(const std::string& text, double& value, std::string& why) {
     why = "'" + text + "' is not a number";
     return false;
   }
-  if (!std::isfinite(value) || errno == ERANGE && std::fabs(value) > 1) {
+  if (!std::isfinite(value) || (errno == ERANGE && std::fabs(value) > 1)) {
     why = "'" + text + "' is not a finite number";
     return false;
   }

@@ -50,7 +50,7 @@ std::vector<skin::SkinOptics> WalkStudy::optics(const std::vector<double>& wavel
 }
 
 skin::WalkRunOptions WalkStudy::run(double incidenceDeg) const {
-  return skin::WalkRunOptions{incidenceDeg, options_.rays, options_.seed};
+  return skin::WalkRunOptions{incidenceDeg, options_.rays, options_.seed, {}, {}};
 }
 
 }  // namespace hylios

@@ -120,7 +120,8 @@ TEST(FigureCommand, Figure13PanelsInMelaninOrderWithCaptionsOnBlack) {
   ASSERT_GT(head, 50u);
   // The panel's mean is the mean of the film over the head pixels (the EXR holds it as float).
   EXPECT_EQ(figure.panels[0].head.pixels, head);
-  EXPECT_NEAR(figure.panels[0].head.mean, sum / head, 1e-5 * figure.panels[0].head.mean);
+  EXPECT_NEAR(figure.panels[0].head.mean, sum / static_cast<double>(head),
+              1e-5 * figure.panels[0].head.mean);
   // Its standard error: at 2 spp per-pixel noise is of order 100 %, so SE ≈ mean / √N within a
   // factor 3 either way.
   const double rough = figure.panels[0].head.mean / std::sqrt(static_cast<double>(head));
