@@ -19,6 +19,7 @@
 #include "skin/core/content_hash.h"
 #include "tests/support/file_bytes.h"
 #include "tests/support/scratch_csv.h"
+#include "tests/support/test_folder.h"
 
 namespace hylios {
 namespace {
@@ -99,11 +100,8 @@ TEST(SweepCases, CasesFileReadsHeaderAndRowsAndNamesErrorsByLineAndColumn) {
 
 class SweepCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(HYLIOS_BINARY_DIR) / "sweep_command_test";
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  // A folder of each test's own: CTest runs the tests of this fixture in parallel.
+  void SetUp() override { dir_ = test::freshTestFolder("sweep_command_test_"); }
   std::vector<std::string> args(const fs::path& out) const {
     return {"--specimen", "S1",      "--vary", "melanosome=2:6:2", "--wavelengths",
             "450,650",    "--angle", "0,30",   "--rays",           "2000",
