@@ -1,5 +1,6 @@
 #include "app/spectrum_wavelength.h"
 
+#include "app/spectral_table_spectrum.h"
 #include "renderer/tracing/exit_table_cache.h"
 #include "renderer/tracing/skin_table_cache.h"
 
@@ -8,14 +9,7 @@ namespace hylios {
 skin::SkinTally exitTableTally(const skin::SkinWalk& walk, double incidenceDeg, std::uint64_t rays,
                                std::uint64_t seed) {
   const auto table = ExitTableCache::shared().get(walk, SkinTableCache::renderSettings());
-  const skin::Vec3 incident = skin::incidentDirection(incidenceDeg);
-  const std::uint64_t stream = skin::wavelengthStream(walk.optics().wavelengthNm);
-  skin::SkinTally tally;
-  for (std::uint64_t i = 0; i < rays; ++i) {
-    skin::Rng rng(seed, stream, i);
-    tally.record(table->sample(incident, rng));
-  }
-  return tally;
+  return sampleTableTally(*table, incidenceDeg, rays, seed);
 }
 
 SpectrumWavelengthResult simulateSpectrumWavelength(const skin::SkinOptics& optics,

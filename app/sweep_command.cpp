@@ -191,9 +191,9 @@ void runSweep(const SweepArguments& args) {
   std::size_t doneIndex = 0;
   std::size_t resumed = 0;
   while (doneList >> doneIndex) done.at(doneIndex) = true, ++resumed;
-  std::vector<std::size_t> todo;
+  std::vector<std::size_t> remaining;
   for (std::size_t i = 0; i < caseCount; ++i)
-    if (!done[i]) todo.push_back(i);
+    if (!done[i]) remaining.push_back(i);
   std::unique_ptr<SweepJournal> journal;
   std::unique_ptr<ProgressBar> progress;
   if (MpiSession::isRoot()) {
@@ -209,7 +209,7 @@ void runSweep(const SweepArguments& args) {
   const auto spectra = skin::SpectralDatabase::load(spectraDir());
   TestExit testExit = TestExit::fromEnvironment();
   dispatchAcrossRanks(
-      todo,
+      remaining,
       [&](std::size_t index) {
         std::string text = caseRows(args, plan, spectra, index);
         if (!MpiSession::isRoot()) testExit.count();
