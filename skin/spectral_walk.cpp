@@ -12,6 +12,7 @@
 #include "skin/melanosome_interaction.h"
 #include "skin/rough_surface.h"
 #include "skin/sampling/rayleigh_sampling.h"
+#include "skin/spectral_weights.h"
 
 namespace hylios::skin {
 namespace {
@@ -69,7 +70,14 @@ class SpectralWalk::State {
   double stayCm = 0, stayMelaninCm = 0;         ///< path in the current slab since the stay began
   std::array<double, kLayerCount> pathCm{};     ///< by slab: path travelled there (λ-free)
   std::array<double, kLayerCount> melaninCm{};  ///< by slab: path inside melanin (λ-free)
-  std::vector<double> logDensity;               ///< per λ: log p_λ(path) up to a common factor
+  /// Sums whose per-λ densities SpectralWalk::settleDensities adds to logDensity once, at the end
+  /// (each λ's log density is linear in them): Algorithm 2's scatterings (count, Σθ), and by slab
+  /// the path flown while Rayleigh was available and the Rayleigh events.
+  unsigned angleCount = 0;
+  double angleSumRad = 0;
+  std::array<double, kLayerCount> rayleighCm{};
+  std::array<unsigned, kLayerCount> rayleighEvents{};
+  std::vector<double> logDensity;  ///< per λ: log p_λ(path) up to a common factor
   /// Per hero j: log q_j(path) − log p_j(path), q_j the density with which hero j proposed the
   /// path (0 except after a forced transmission, where q_j lacks the Fresnel factor).
   std::vector<double> proposalOffset;
@@ -82,11 +90,13 @@ class SpectralWalk::State {
     for (std::size_t j = 0; j < n; ++j)
       top = std::max({top, logDensity[j], logDensity[j] + proposalOffset[j]});
     if (!std::isfinite(top)) return out.assign(n, 0.0);
+    spectral_weights::exponentialsOfSum(n, logDensity.data(), proposalOffset.data(), -top,
+                                        out.data());
     double proposal = 0;
-    for (std::size_t j = 0; j < n; ++j)
-      proposal += std::exp(logDensity[j] + proposalOffset[j] - top);
+    for (std::size_t j = 0; j < n; ++j) proposal += out[j];
     const double scale = static_cast<double>(n) / proposal;
-    for (std::size_t i = 0; i < n; ++i) out[i] = std::exp(logDensity[i] - top) * scale;
+    spectral_weights::exponentials(n, logDensity.data(), 1.0, -top, out.data());
+    for (std::size_t i = 0; i < n; ++i) out[i] *= scale;
   }
 };
 
@@ -232,10 +242,9 @@ void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
   s.stayMelaninCm += chordsOverA * m.semiMinorAxisCm;
   const PolarCosSin theta =
       sampleExponentialPolarCosSin(meanAngleRad_[s.hero], rng);  // Algorithm 2
-  if (anglesDiffer_) {
-    const double angle = theta.thetaRad;
-    for (std::size_t i = 0; i < wavelengthCount_; ++i)
-      s.logDensity[i] += logAngleNormalisation_[i] - angle / meanAngleRad_[i];
+  if (anglesDiffer_) {  // Σ_k (log norm_i − θ_k/θo_i), added by settleDensities
+    ++s.angleCount;
+    s.angleSumRad += theta.thetaRad;
   }
   const Azimuth phi = sampleAzimuth(rng);
   s.direction = directionAbout(s.direction, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
@@ -259,10 +268,8 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
     const bool totalForAll =
         fromInside && 1.0 - cosI * cosI >= 1.0 / (smallestSurfaceIndex_ * smallestSurfaceIndex_);
     if (surfaceIndicesDiffer_ && !totalForAll)
-      for (std::size_t i = 0; i < wavelengthCount_; ++i) {
-        const auto [n1, n2] = indices(i);
-        s.logDensity[i] += std::log(fresnelReflectance(cosI, n1, n2));
-      }
+      spectral_weights::addLogReflectances(wavelengthCount_, cosI, surfaceIndex_.data(), fromInside,
+                                           s.logDensity.data());
     return false;
   }
   const Vec3 t = refractDirection(d, m, nFromH, nToH, hero.cosTransmitted);
@@ -275,40 +282,19 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
       }
     return true;
   }
+  if (!delta) {  // each λ's facet through the generalised half vector (skin/spectral_weights.h)
+    spectral_weights::addRefractionDensities(wavelengthCount_, d, t, macro, surfaceIndex_.data(),
+                                             fromInside, aspectSquared_, forceTransmission,
+                                             s.logDensity.data(), s.proposalOffset.data());
+    return true;
+  }
   for (std::size_t i = 0; i < wavelengthCount_; ++i) {
+    // A point mass: only wavelengths that refract to the same direction share it.
     const auto [n1, n2] = indices(i);
     double& logDensity = s.logDensity[i];
-    if (delta) {  // a point mass: only wavelengths that refract to the same direction share it
-      logDensity = n2 == nToH && n1 == nFromH
-                       ? logDensity + std::log1p(-fresnelReflectance(cosI, n1, n2))
-                       : -kInfinity;
-      continue;
-    }
-    // The facet that refracts d into t for these indices: the generalised half vector n1·d − n2·t.
-    Vec3 h = d * n1 - t * n2;
-    const double length = std::sqrt(dot(h, h));
-    if (!(length > 0)) {
-      logDensity = -kInfinity;
-      continue;
-    }
-    h = h * (1.0 / length);
-    if (dot(d, h) > 0) h = h * -1.0;
-    const double cosD = dot(d, h), cosT = dot(t, h);
-    const double cosFacet = dot(h, macro);  // the facet's polar angle about the macro normal
-    const FresnelResult f = fresnel(cosD, n1, n2);
-    if (!(cosT < 0 && cosFacet > 0) || f.reflectance >= 1.0) {
-      logDensity = -kInfinity;
-      continue;
-    }
-    const double sin2 = (1.0 - cosFacet) * (1.0 + cosFacet);
-    const double facetDensity = aspectSquared_ * cosFacet * cosFacet + sin2;  // D ∝ this⁻²
-    const double jacobianDenominator = n1 * cosD - n2 * cosT;
-    logDensity += -2.0 * std::log(facetDensity) + std::log1p(-f.reflectance) +
-                  std::log(n2 * n2 * std::fabs(cosT)) -
-                  2.0 * std::log(std::fabs(jacobianDenominator));
-    // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
-    // lacks its (1 − F), which the MIS denominator must not hold either.
-    if (forceTransmission) s.proposalOffset[i] -= std::log1p(-f.reflectance);
+    logDensity = n2 == nToH && n1 == nFromH
+                     ? logDensity + std::log1p(-fresnelReflectance(cosI, n1, n2))
+                     : -kInfinity;
   }
   return true;
 }
@@ -343,8 +329,8 @@ bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitE
         splitEntry && !fromInside && attempt == 0 && !delta && mirrored.z * towardFar < 0;
     if (split) {
       s.path.surfaceWeight.resize(wavelengthCount_);
-      for (std::size_t i = 0; i < wavelengthCount_; ++i)
-        s.path.surfaceWeight[i] = fresnelReflectance(dot(s.direction, m), 1.0, surfaceIndex_[i]);
+      spectral_weights::reflectances(wavelengthCount_, dot(s.direction, m), surfaceIndex_.data(),
+                                     false, s.path.surfaceWeight.data());
       s.path.surfaceDirection = mirrored;
     }
     const bool transmitted = crossFacet(s, m, macroNormal, delta, inSkin, rng, split);
@@ -382,35 +368,66 @@ bool SpectralWalk::survivesRoulette(State& s, Rng& rng) const {
   return false;
 }
 
+void SpectralWalk::settleDensities(State& s) const {
+  const std::size_t n = wavelengthCount_;
+  if (s.angleCount > 0) {
+    const double count = s.angleCount, sum = s.angleSumRad;
+    for (std::size_t i = 0; i < n; ++i)
+      s.logDensity[i] += count * logAngleNormalisation_[i] - sum / meanAngleRad_[i];
+    s.angleCount = 0;
+    s.angleSumRad = 0;
+  }
+  for (std::size_t k = 0; k < slabs_.size(); ++k) {
+    if (!(s.rayleighCm[k] > 0) && s.rayleighEvents[k] == 0) continue;
+    const Slab& slab = slabs_[k];
+    const double cm = s.rayleighCm[k], events = s.rayleighEvents[k];
+    for (std::size_t i = 0; i < n; ++i)
+      s.logDensity[i] += -slab.muRayleigh_perCm[i] * cm + events * slab.logRayleigh[i];
+    s.rayleighCm[k] = 0;
+    s.rayleighEvents[k] = 0;
+  }
+}
+
 void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
   endStay(s);
+  settleDensities(s);
   SpectralPath& path = s.path;
   path.end = end;
   path.exitOffsetXCm = s.position.x;
   path.exitOffsetYCm = s.position.y;
   std::vector<double>& ratio = s.ratio;
   s.misRatios(ratio);
-  for (std::size_t i = 0; i < wavelengthCount_; ++i) {
-    double depth = 0;
-    if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
-      double before = 1;
-      for (const SpectralPath::Stay& stay : s.stays) {
-        const double melaninDepth = melaninMuA_perCm_[i] * stay.melaninCm;
-        const double stayDepth = slabs_[stay.slab].muA_perCm[i] * stay.cm + melaninDepth;
-        depth += stayDepth;
-        const double after = std::exp(-depth);
-        const double lost = stay.roulette * (before - after) * ratio[i];
-        const std::size_t layer = index(slabs_[stay.slab].layer);
-        path.absorbed[i][layer] += lost;
-        if (stayDepth > 0)
-          path.absorbedInMelanosomes[i][layer] += lost * (melaninDepth / stayDepth);
-        before = after;
+  const std::size_t n = wavelengthCount_;
+  std::array<spectral_weights::SlabAbsorption, kLayerCount> slabs{};
+  for (std::size_t k = 0; k < slabs_.size(); ++k)
+    slabs[k] = {slabs_[k].muA_perCm.data(), index(slabs_[k].layer)};
+  // Workspace: the transmittance per λ, then (layer absorption) the depth and the losses by layer.
+  std::vector<double>& work = path.work;
+  double* transmitted = nullptr;
+  if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
+    work.assign((1 + 2 * kLayerCount + s.stays.size()) * n, 0.0);
+    transmitted = work.data();
+    double* absorbed = transmitted + n;
+    double* inMelanin = absorbed + kLayerCount * n;
+    double* depth = inMelanin + kLayerCount * n;
+    spectral_weights::stayLosses(n, s.stays.data(), s.stays.size(), slabs.data(),
+                                 melaninMuA_perCm_.data(), ratio.data(), depth, transmitted,
+                                 absorbed, inMelanin);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
+        path.absorbed[i][layer] += absorbed[layer * n + i];
+        path.absorbedInMelanosomes[i][layer] += inMelanin[layer * n + i];
       }
-    } else {
-      for (std::size_t k = 0; k < slabs_.size(); ++k)
-        depth += slabs_[k].muA_perCm[i] * s.pathCm[k] + melaninMuA_perCm_[i] * s.melaninCm[k];
-    }
-    path.exitWeight[i] = scores ? s.roulette * std::exp(-depth) * ratio[i] : 0.0;
+  } else {
+    work.resize(2 * n);
+    transmitted = work.data();
+    double* depth = transmitted + n;
+    spectral_weights::pathDepths(n, slabs_.size(), slabs.data(), s.pathCm.data(),
+                                 s.melaninCm.data(), melaninMuA_perCm_.data(), depth);
+    spectral_weights::exponentials(n, depth, -1.0, 0.0, transmitted);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    path.exitWeight[i] = scores ? s.roulette * transmitted[i] * ratio[i] : 0.0;
     // E[ratio] = 1 − (the surface weight scored at a split entry): E = 1 − R − T.
     path.absorbedTotal[i] = ratio[i] - path.exitWeight[i];
   }
@@ -436,11 +453,10 @@ void SpectralWalk::traceEntered(State& s, Rng& rng) const {
     s.stayCm += flightCm;
     s.position += d * flightCm;
     const bool rayleighEvent = collides && rng.uniform() * muScatter >= slab.muMelanosome_perCm;
-    if (rayleighHere && wavelengthCount_ > 1)
-      for (std::size_t i = 0; i < wavelengthCount_; ++i) {
-        s.logDensity[i] +=
-            -slab.muRayleigh_perCm[i] * flightCm + (rayleighEvent ? slab.logRayleigh[i] : 0.0);
-      }
+    if (rayleighHere && wavelengthCount_ > 1) {  // −μR_i·flight (+ log μR_i), settleDensities
+      s.rayleighCm[s.slab] += flightCm;
+      if (rayleighEvent) ++s.rayleighEvents[s.slab];
+    }
     if (collides) {
       if (!rayleighEvent) {
         meetMelanosomes(s, s.slab, rng);

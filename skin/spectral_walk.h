@@ -79,6 +79,7 @@ struct SpectralPath {
   };
   std::vector<Stay> stays;
   std::vector<double> scratch;
+  std::vector<double> work;  ///< per-λ arrays of SpectralWalk::finish (skin/spectral_weights.h)
 };
 
 /// Tabulated melanosomes (WalkOptions::tabulatedMelanosomes): each melanosome met draws its
@@ -153,6 +154,8 @@ class SpectralWalk {
   bool survivesRoulette(State& s, Rng& rng) const;
   /// Ends the path: `end`, scores = roulette × transmittance × MIS ratio (0 when `scores` false).
   void finish(State& s, PathEnd end, bool scores) const;
+  /// Adds the densities deferred in s (State::angleCount and the Rayleigh sums) to s.logDensity.
+  void settleDensities(State& s) const;
   void meetMelanosomes(State& s, std::size_t k, Rng& rng) const;
 
   WalkOptions options_;

@@ -1,0 +1,172 @@
+#include "skin/spectral_weights.h"
+
+#include <cmath>
+
+#include "skin/core/vector_math.h"
+
+// GCC on x86-64: an AVX2 clone of each kernel besides the baseline (SSE2), chosen at load time.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__)
+#define HYLIOS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HYLIOS_VECTOR_CLONES
+#endif
+
+namespace hylios::skin::spectral_weights {
+namespace {
+/// fresnel(cosThetaIncident, n1, n2).reflectance (skin/fresnel.cpp), the same operations with
+/// selects for its branches (so that a loop of it vectorises); cosT as fresnel's cosTransmitted.
+inline double fresnelReflectance(double cosThetaIncident, double n1, double n2, double& cosT) {
+  const double absCos = std::fabs(cosThetaIncident);
+  const double cosI = absCos < 1.0 ? absCos : 1.0;  // fmin(1, |cos|), NaN → 1 as fmin
+  const double ratio = n1 / n2;
+  const double cosTSquared = (1.0 - ratio) * (1.0 + ratio) + ratio * ratio * cosI * cosI;
+  const bool total = cosTSquared <= 0.0;  // total internal reflection
+  const double root = std::sqrt(total ? 0.0 : cosTSquared);
+  const double n1cosI = n1 * cosI, n2cosT = n2 * root;
+  const double n2cosI = n2 * cosI, n1cosT = n1 * root;
+  const double rs = (n1cosI - n2cosT) / (n1cosI + n2cosT);
+  const double rp = (n1cosT - n2cosI) / (n1cosT + n2cosI);
+  const double reflectance = 0.5 * (rs * rs + rp * rp);
+  const bool same = n1 == n2;
+  cosT = same ? cosI : root;
+  return same ? 0.0 : (total ? 1.0 : reflectance);
+}
+}  // namespace
+
+HYLIOS_VECTOR_CLONES
+void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
+                const SlabAbsorption* slabs, const double* melaninMuA_perCm, const double* ratio,
+                double* __restrict work, double* __restrict transmitted,
+                double* __restrict absorbed, double* __restrict inMelanin) {
+  // Three passes, so that the exponentials (most of the cost) form one loop without a chain from
+  // stay to stay: the depth after each stay, its transmittance, then each stay's loss.
+  double* __restrict depth = work;  // stayCount·n: the depth after stay k, then exp(−depth)
+  for (std::size_t k = 0; k < stayCount; ++k) {
+    const SpectralPath::Stay& stay = stays[k];
+    const double* __restrict muA = slabs[stay.slab].muA_perCm;
+    const double cm = stay.cm, melaninCm = stay.melaninCm;
+    const double* __restrict before = k > 0 ? depth + (k - 1) * n : nullptr;
+    double* __restrict after = depth + k * n;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double stayDepth = muA[i] * cm + melaninMuA_perCm[i] * melaninCm;
+      after[i] = (k > 0 ? before[i] : 0.0) + stayDepth;
+    }
+  }
+  const std::size_t total = stayCount * n;
+  for (std::size_t j = 0; j < total; ++j) depth[j] = vectorExp(-depth[j]);
+  for (std::size_t i = 0; i < n; ++i) transmitted[i] = 1.0;
+  for (std::size_t k = 0; k < stayCount; ++k) {  // in the order the path made them
+    const SpectralPath::Stay& stay = stays[k];
+    const SlabAbsorption& slab = slabs[stay.slab];
+    const double* __restrict muA = slab.muA_perCm;
+    const double* __restrict after = depth + k * n;
+    double* __restrict lostHere = absorbed + slab.layer * n;
+    double* __restrict melaninHere = inMelanin + slab.layer * n;
+    const double cm = stay.cm, melaninCm = stay.melaninCm, roulette = stay.roulette;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double melaninDepth = melaninMuA_perCm[i] * melaninCm;
+      const double stayDepth = muA[i] * cm + melaninDepth;
+      const double lost = roulette * (transmitted[i] - after[i]) * ratio[i];
+      lostHere[i] += lost;
+      // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
+      const double share = stayDepth > 0 ? melaninDepth / (stayDepth > 0 ? stayDepth : 1.0) : 0.0;
+      melaninHere[i] += lost * share;
+      transmitted[i] = after[i];
+    }
+  }
+}
+
+HYLIOS_VECTOR_CLONES
+void pathDepths(std::size_t n, std::size_t slabCount, const SlabAbsorption* slabs,
+                const double* pathCm, const double* melaninCm, const double* melaninMuA_perCm,
+                double* __restrict depth) {
+  for (std::size_t i = 0; i < n; ++i) depth[i] = 0.0;
+  for (std::size_t k = 0; k < slabCount; ++k) {
+    const double* __restrict muA = slabs[k].muA_perCm;
+    const double cm = pathCm[k], inMelanin = melaninCm[k];
+    for (std::size_t i = 0; i < n; ++i) depth[i] += muA[i] * cm + melaninMuA_perCm[i] * inMelanin;
+  }
+}
+
+HYLIOS_VECTOR_CLONES
+void exponentials(std::size_t n, const double* x, double scale, double offset,
+                  double* __restrict out) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = vectorExp(scale * x[i] + offset);
+}
+
+HYLIOS_VECTOR_CLONES
+void exponentialsOfSum(std::size_t n, const double* x, const double* y, double offset,
+                       double* __restrict out) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = vectorExp(x[i] + y[i] + offset);
+}
+
+HYLIOS_VECTOR_CLONES
+void reflectances(std::size_t n, double cosI, const double* index, bool fromInside,
+                  double* __restrict out) {
+  // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
+  const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ni = index[i];
+    const double n1 = inside * ni + outside, n2 = outside * ni + inside;  // exact: 0 or 1 factors
+    double cosT;
+    out[i] = fresnelReflectance(cosI, n1, n2, cosT);
+  }
+}
+
+HYLIOS_VECTOR_CLONES
+void addLogReflectances(std::size_t n, double cosI, const double* index, bool fromInside,
+                        double* __restrict logDensity) {
+  // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
+  const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ni = index[i];
+    const double n1 = inside * ni + outside, n2 = outside * ni + inside;  // exact: 0 or 1 factors
+    double cosT;
+    logDensity[i] += vectorLog(fresnelReflectance(cosI, n1, n2, cosT));
+  }
+}
+
+HYLIOS_VECTOR_CLONES
+void addRefractionDensities(std::size_t n, const Vec3& d, const Vec3& t, const Vec3& macro,
+                            const double* index, bool fromInside, double aspectSquared, bool forced,
+                            double* __restrict logDensity, double* __restrict proposalOffset) {
+  // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
+  const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
+  const double dx = d.x, dy = d.y, dz = d.z, tx = t.x, ty = t.y, tz = t.z;
+  const double mx = macro.x, my = macro.y, mz = macro.z;
+  const double forcedFactor = forced ? 1.0 : 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ni = index[i];
+    const double n1 = inside * ni + outside, n2 = outside * ni + inside;  // exact: 0 or 1 factors
+    // The facet that refracts d into t for these indices: the generalised half vector n1·d − n2·t.
+    double hx = dx * n1 - tx * n2, hy = dy * n1 - ty * n2, hz = dz * n1 - tz * n2;
+    const double length = std::sqrt(hx * hx + hy * hy + hz * hz);
+    const bool hasLength = length > 0;
+    const double inverse = 1.0 / (hasLength ? length : 1.0);
+    hx = hx * inverse, hy = hy * inverse, hz = hz * inverse;
+    const bool flip = dx * hx + dy * hy + dz * hz > 0;
+    hx = flip ? hx * -1.0 : hx, hy = flip ? hy * -1.0 : hy, hz = flip ? hz * -1.0 : hz;
+    const double cosD = dx * hx + dy * hy + dz * hz, cosT = tx * hx + ty * hy + tz * hz;
+    const double cosFacet = hx * mx + hy * my + hz * mz;  // the facet's polar angle about macro
+    double cosTransmitted;
+    const double reflectance = fresnelReflectance(cosD, n1, n2, cosTransmitted);
+    // Where that facet exists: facing, with some transmission (the conditions as 0/1 doubles:
+    // GCC 12 does not vectorise this loop with a conjunction of bools).
+    const double okLength = hasLength ? 1.0 : 0.0, okT = cosT < 0 ? 1.0 : 0.0;
+    const double okFacet = cosFacet > 0 ? 1.0 : 0.0, okF = reflectance < 1.0 ? 1.0 : 0.0;
+    const bool valid = okLength * okT * okFacet * okF > 0.5;
+    const double sin2 = (1.0 - cosFacet) * (1.0 + cosFacet);
+    const double facetDensity = aspectSquared * cosFacet * cosFacet + sin2;  // D ∝ this⁻²
+    const double jacobianDenominator = n1 * cosD - n2 * cosT;
+    const double logTransmitted = vectorLog(1.0 - reflectance);
+    const double logDensityHere = -2.0 * vectorLog(facetDensity) + logTransmitted +
+                                  vectorLog(n2 * n2 * std::fabs(cosT)) -
+                                  2.0 * vectorLog(std::fabs(jacobianDenominator));
+    logDensity[i] = valid ? logDensity[i] + logDensityHere : -HUGE_VAL;
+    // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
+    // lacks its (1 − F), which the MIS denominator must not hold either.
+    proposalOffset[i] -= valid ? forcedFactor * logTransmitted : 0.0;
+  }
+}
+
+}  // namespace hylios::skin::spectral_weights
