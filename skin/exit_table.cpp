@@ -8,6 +8,7 @@
 
 #include "skin/core/constants.h"
 #include "skin/core/content_hash.h"
+#include "skin/sampling/discrete_sampling.h"
 
 namespace hylios::skin {
 namespace {
@@ -31,24 +32,6 @@ void validateSettings(const ExitTableSettings& s) {
   checkRange("offset azimuth bins", nonNegative(s.offsetAzimuthBins), 1, 4096);
   checkRange("polar bins", nonNegative(s.polarBins), 1, 4096);
   checkRange("rays per bin", s.raysPerBin, 2, std::uint64_t{1} << 32);
-}
-
-std::vector<double> cumulative(const std::vector<double>& weights) {
-  std::vector<double> cdf(weights.size());
-  double total = 0;
-  for (std::size_t i = 0; i < weights.size(); ++i) cdf[i] = total += weights[i];
-  return cdf;
-}
-
-/// Index i with probability weights[i]/total (cdf = cumulative weights, cdf.back() > 0); never
-/// an entry of weight 0.
-std::size_t pick(const std::vector<double>& cdf, double u) {
-  const double target = u * cdf.back();
-  auto i = static_cast<std::size_t>(std::upper_bound(cdf.begin(), cdf.end(), target) - cdf.begin());
-  if (i < cdf.size()) return i;
-  i = cdf.size() - 1;  // u·total rounded up to the total: the last entry of positive weight
-  while (i > 0 && cdf[i] == cdf[i - 1]) --i;
-  return i;
 }
 
 std::vector<double> fractions(const std::vector<double>& weights) {
@@ -369,10 +352,10 @@ void ExitTable::prepareSampling() {
       outcomes[kOutcomeAbsorbed + l] = std::max(0.0, b.absorbed[l] - b.absorbedInMelanosome[l]);
       outcomes[kOutcomeMelanosome + l] = b.absorbedInMelanosome[l];
     }
-    b.outcomeCdf = cumulative(outcomes);
-    b.offsetCdf = cumulative(b.offsetWeights);
-    b.exitPolarCdf = cumulative(b.exitPolarWeights);
-    b.transmittedPolarCdf = cumulative(b.transmittedPolarWeights);
+    b.outcomeCdf = cumulativeWeights(outcomes);
+    b.offsetCdf = cumulativeWeights(b.offsetWeights);
+    b.exitPolarCdf = cumulativeWeights(b.exitPolarWeights);
+    b.transmittedPolarCdf = cumulativeWeights(b.transmittedPolarWeights);
   }
 }
 
@@ -387,26 +370,34 @@ SkinPath ExitTable::sample(const Vec3& incident, Rng& rng) const {
 }
 
 SkinPath ExitTable::sampleEntered(const Vec3& transmitted, Rng& rng) const {
+  return sampleBin(bins_[static_cast<std::size_t>(chooseBin(transmitted.z, rng.uniform()))],
+                   transmitted, rng);
+}
+
+int ExitTable::chooseBin(double transmittedCosine, double u) const {
   const int bins = settings_.cosineBins;
-  const double x = std::clamp(transmitted.z, 0.0, 1.0) * bins - 1;  // centres at (k + 1)/K
-  int k = 0;
-  const double u = rng.uniform();
-  if (x >= bins - 1) {
-    k = bins - 1;
-  } else if (x > 0) {
-    k = static_cast<int>(x);
-    if (u < x - k) ++k;  // linear interpolation between the centres k and k + 1
-  }
-  return sampleBin(bins_[static_cast<std::size_t>(k)], transmitted, rng);
+  const double x = std::clamp(transmittedCosine, 0.0, 1.0) * bins - 1;  // centres at (k + 1)/K
+  if (x >= bins - 1) return bins - 1;
+  if (!(x > 0)) return 0;
+  const int k = static_cast<int>(x);
+  return u < x - k ? k + 1 : k;  // linear interpolation between the centres k and k + 1
+}
+
+double ExitTable::radiusInCell(int bin, int radial, double v) const {
+  const double lo = radialCellLowerCm(radial), hi = radialCellUpperCm(bin, radial);
+  if (radial == 0) return hi * std::sqrt(v);                     // uniform in area
+  if (radial > settings_.radialBins) return lo + v * (hi - lo);  // overflow: uniform
+  return lo * std::pow(hi / lo, v);                              // log-uniform
 }
 
 SkinPath ExitTable::sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng) const {
   SkinPath path;
   path.events = 1;
-  const std::size_t outcome = pick(bin.outcomeCdf, rng.uniform());
+  const std::size_t outcome = pickCumulative(bin.outcomeCdf, rng.uniform());
   auto polarDirection = [&](const std::vector<double>& cdf, double zSign) {
     const double cosine =
-        (static_cast<double>(pick(cdf, rng.uniform())) + rng.uniform()) / settings_.polarBins;
+        (static_cast<double>(pickCumulative(cdf, rng.uniform())) + rng.uniform()) /
+        settings_.polarBins;
     const double sine = std::sqrt(std::max(0.0, 1 - cosine * cosine));
     const double phi = 2 * kPi * rng.uniform();
     return Vec3{sine * std::cos(phi), sine * std::sin(phi), zSign * cosine};
@@ -428,18 +419,9 @@ SkinPath ExitTable::sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng)
   }
   path.end = PathEnd::SubsurfaceReflection;
   const std::size_t A = static_cast<std::size_t>(settings_.offsetAzimuthBins);
-  const std::size_t cell = pick(bin.offsetCdf, rng.uniform());
-  const int radial = static_cast<int>(cell / A);
-  const double v = rng.uniform();
-  double r;
+  const std::size_t cell = pickCumulative(bin.offsetCdf, rng.uniform());
   const int binIndex = static_cast<int>(&bin - bins_.data());
-  const double lo = radialCellLowerCm(radial), hi = radialCellUpperCm(binIndex, radial);
-  if (radial == 0)
-    r = hi * std::sqrt(v);  // uniform in area
-  else if (radial > settings_.radialBins)
-    r = lo + v * (hi - lo);  // overflow: uniform
-  else
-    r = lo * std::pow(hi / lo, v);  // log-uniform
+  const double r = radiusInCell(binIndex, static_cast<int>(cell / A), rng.uniform());
   double phi = (static_cast<double>(cell % A) + rng.uniform()) / static_cast<double>(A) * kPi;
   if (rng.uniform() < 0.5) phi = -phi;
   phi += std::atan2(transmitted.y, transmitted.x);

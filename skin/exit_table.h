@@ -180,6 +180,12 @@ class ExitTable {
   std::size_t offsetCell(double offsetXCm, double offsetYCm) const;
   int radialCell(double radiusCm) const;
   SkinPath sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng) const;
+  /// The bin a ray entered along a direction of this cosine uses: the nearer centres' linear
+  /// interpolation probabilities, drawn with u.
+  int chooseBin(double transmittedCosine, double u) const;
+  /// A radius in radial cell `radial` of bin `bin` by its law within the cell (v uniform).
+  double radiusInCell(int bin, int radial, double v) const;
+  friend class ExitTableBundle;  // samples a band's tables at once (skin/exit_table_bundle.h)
 
   SkinWalk walk_;
   ExitTableSettings settings_;

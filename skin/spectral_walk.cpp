@@ -211,6 +211,28 @@ void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
   s.misRatios(path.exitWeight);
 }
 
+bool SpectralWalk::enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
+                         SpectralEntry& entry, bool splitEntryReflection) const {
+  State s(path, wavelengthCount_, options_.layerAbsorption);
+  path.events = 1;
+  path.exitOffsetXCm = path.exitOffsetYCm = 0;
+  s.hero = drawHero(rng);
+  s.direction = incidentDirection;
+  if (!crossSurface(s, false, rng, splitEntryReflection)) {
+    path.end = PathEnd::SurfaceReflection;
+    path.exitDirection = s.direction;
+    s.misRatios(path.exitWeight);
+    return false;
+  }
+  entry.direction = s.direction;
+  entry.hero = s.hero;
+  entry.logTarget = s.logDensity;
+  entry.logProposal.resize(wavelengthCount_);
+  for (std::size_t i = 0; i < wavelengthCount_; ++i)
+    entry.logProposal[i] = s.logDensity[i] + s.proposalOffset[i];
+  return true;
+}
+
 void SpectralWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng,
                                 SpectralPath& path) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);

@@ -82,6 +82,18 @@ struct SpectralPath {
   std::vector<double> work;  ///< per-λ arrays of SpectralWalk::finish (skin/spectral_weights.h)
 };
 
+/// A spectral path's surface entry alone (SpectralWalk::enter), for samplers that tabulate what
+/// follows (skin/exit_table_bundle.h): the densities of the crossing per λ, so that the rest of the
+/// path can join the same one-sample MIS over the bundle.
+struct SpectralEntry {
+  Vec3 direction;        ///< transmitted direction (z > 0), the same for every λ
+  std::size_t hero = 0;  ///< the wavelength whose law made the crossing (uniform over the bundle)
+  /// Per λ, up to one common additive constant: log p_λ, the density of the crossing under λ's
+  /// own law (target), and log q_λ, the density with which hero λ would have proposed it (they
+  /// differ by the Fresnel factor of a forced transmission, WalkOptions::splitEntryReflection).
+  std::vector<double> logTarget, logProposal;
+};
+
 /// Tabulated melanosomes (WalkOptions::tabulatedMelanosomes): each melanosome met draws its
 /// internal path length from a table of this many traced paths (skin/melanosome_path_lengths.h), 4×
 /// the analog table's, so its sampling error (≈ 0.1 % of one melanosome's absorption) stays far
@@ -109,6 +121,12 @@ class SpectralWalk {
   }
   /// The same with the entry split (WalkOptions::splitEntryReflection) chosen per call.
   void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
+             bool splitEntryReflection) const;
+  /// The surface crossing of trace() alone. Returns true when the path entered the skin; then
+  /// `entry` holds its direction, hero and densities, and `path` only the surface weights of a
+  /// split entry (SpectralPath::surfaceWeight). Otherwise `path` is the surface reflection, scored
+  /// exactly as trace() scores it.
+  bool enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& path, SpectralEntry& entry,
              bool splitEntryReflection) const;
   /// A path that has just crossed into the skin along `transmittedDirection` (unit, z > 0), the
   /// same for every wavelength (like SkinWalk::traceEntered; exit tables are built from these).

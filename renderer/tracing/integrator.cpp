@@ -71,8 +71,7 @@ Integrator::Integrator(const SceneDesc& scene, const std::vector<double>& channe
   std::unique_ptr<skin::SpectralDatabase> spectra;
   if (anySkin)
     spectra = std::make_unique<skin::SpectralDatabase>(skin::SpectralDatabase::load(spectraDir()));
-  spectral_ = scene.integrator.estimator == skin::Estimator::Spectral &&
-              scene.integrator.skinMode != skin::SkinMode::Table;
+  spectral_ = scene.integrator.estimator == skin::Estimator::Spectral;
   std::vector<std::vector<std::size_t>> bundles;  // the film's bands, as channel lists
   if (scene.integrator.estimator == skin::Estimator::Spectral) {  // walks, or tables' builds
     const Film layout(scene.film);

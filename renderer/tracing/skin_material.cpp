@@ -89,11 +89,17 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
   walks_ = std::make_unique<SkinWalkCache>(
       specimen, lo, hi, channelWavelengths, spectra, desc.where,
       tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
-      spectralTables ? 0.0 : effectTolerance,
-      tableMode ? std::vector<std::vector<std::size_t>>{} : bundles);
+      spectralTables ? 0.0 : effectTolerance, bundles);
   if (tableMode)
     tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(),
                                                SkinTableCache::renderSettings(), spectralTables);
+  if (spectralTables)  // each band's tables sampled at once, the entry crossed by its walk
+    for (int level = 0; level < walks_->levels(); ++level)
+      for (std::size_t b = 0; b < bundles.size(); ++b) {
+        std::vector<const skin::ExitTable*> members;
+        for (std::size_t channel : bundles[b]) members.push_back(&tables_->table(channel, level));
+        tableBundles_.emplace_back(walks_->spectralWalk(b, level), std::move(members));
+      }
   for (int i = 0; i < kLobeTableSize; ++i)
     lobeNormalisation_.push_back(
         facetReflectionLeaves(aspectRatio_, static_cast<double>(i) / (kLobeTableSize - 1)));
@@ -149,15 +155,20 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
                                           const std::vector<std::size_t>& materialOfShape,
                                           skin::Rng& rng, double* weights,
                                           double* surfaceWeights) const {
-  if (tables_)
-    throw std::logic_error("SkinMaterial::scatterSpectral: table mode has no spectral walks");
+  if (tables_ && tableBundles_.empty())
+    throw std::logic_error("SkinMaterial::scatterSpectral: the tables were built per wavelength");
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
   const skin::Frame frame(toSkin(-normals.shading));
   const skin::Vec3 incident = frame.toLocal(toSkin(direction));
   const int level = walks_->level(melaninMultiplier(hit), rng.uniform());
   const skin::SpectralWalk& walk = walks_->spectralWalk(bundle, level);
   thread_local skin::SpectralPath path;  // reused: the walk keeps its per-λ arrays there
-  walk.trace(incident, rng, path, surfaceWeights != nullptr);
+  const bool split = surfaceWeights != nullptr;
+  if (tables_)
+    tableBundles_[static_cast<std::size_t>(level) * walks_->bundles() + bundle].sample(
+        incident, rng, path, split);
+  else
+    walk.trace(incident, rng, path, split);
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
   SkinScatter out = exitOf(hit, direction, normals, frame, path.end, path.exitDirection,
                            path.exitOffsetXCm, path.exitOffsetYCm, geometry, materialOfShape);

@@ -13,8 +13,11 @@
 // carries every channel of its band, and the walk is the spectral walk (skin/spectral_walk.h) of
 // the band's channels at the hit's melanin level: one path with a weight per channel, so that no
 // absorbed/escaped outcome is drawn per camera path — each channel's exit weight multiplies its
-// throughput (expected value), and a surface or subsurface exit continues as below. Everything
-// else of this comment holds per channel with that weight.
+// throughput (expected value), and a surface or subsurface exit continues as below. In table mode
+// the band's exit tables are sampled at once instead (skin/exit_table_bundle.h: the entry crossed
+// by the band's spectral walk, one exit offset for every channel, each channel weighted by its
+// table's P(subsurface) and density ratio). Everything else of this comment holds per channel
+// with that weight.
 //
 // ESTIMATOR. Reciprocity lets the walk start on the camera side: the camera ray, direction ω_c,
 // hits skin at x. Local frame (skin::Frame): z = −n (into the skin, n the shading normal facing the
@@ -63,6 +66,7 @@
 #include "renderer/tracing/skin_walk_cache.h"
 #include "renderer/tracing/surface_vectors.h"
 #include "skin/core/random.h"
+#include "skin/exit_table_bundle.h"
 #include "skin/skin_mode.h"
 #include "skin/spectral_database.h"
 
@@ -115,7 +119,8 @@ class SkinMaterial {
   /// The spectral estimator: the walk for bundle `bundle` (a band's channels, given to the
   /// constructor) at `hit`; weights[i] receives the exit weight of the bundle's i-th channel (the
   /// factor on the path throughput; all 0 when the walk was ended by Russian roulette, which is
-  /// reported as Absorbed). Walk mode only (throws std::logic_error in table mode).
+  /// reported as Absorbed). In table mode the band's tables are sampled at once (throws
+  /// std::logic_error when the tables were built per wavelength, i.e. without bundles).
   /// With `surfaceWeights` (not null) the entry split is on: a surface reflection that a single
   /// facet sends out is scored into surfaceWeights[i] and the walk goes on into the skin
   /// (SkinScatter::surfaceBranch; skin/skin_walk.h, WalkOptions::splitEntryReflection).
@@ -154,7 +159,10 @@ class SkinMaterial {
   FreckleField freckles_;
   std::unique_ptr<SkinWalkCache> walks_;
   std::unique_ptr<SkinTableCache> tables_;  ///< table mode only
-  std::vector<double> lobeNormalisation_;   ///< N at cosθ = i / (size − 1)
+  /// Table mode with spectral tables: per level and band ([level * bands + band]), the band's
+  /// tables sampled at once (skin/exit_table_bundle.h).
+  std::vector<skin::ExitTableBundle> tableBundles_;
+  std::vector<double> lobeNormalisation_;  ///< N at cosθ = i / (size − 1)
 };
 
 /// The specimen of a skin material: loaded by name or path (specimenDir for names), overrides

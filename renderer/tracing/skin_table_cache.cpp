@@ -11,7 +11,7 @@ namespace hylios {
 skin::ExitTableSettings SkinTableCache::renderSettings() {
   skin::ExitTableSettings settings;
   settings.cosineBins = 12;
-  settings.raysPerBin = 40000;
+  settings.raysPerBin = 10000;
   return settings;
 }
 

@@ -7,9 +7,10 @@
 // (skin_walk_cache.h), and every level costs channels × K × N walks to build.
 //
 // With spectral building (the spectral estimator, issue 11) the channels of a level are grouped by
-// the bundle rule (skin/spectral_bundle.h) and every bundle's tables come from one set of spectral
-// walks (ExitTable::buildBundle): levels × bundles × K × N walks in all instead of levels ×
-// channels × K × N. The walks must then be the full model (no effect plan).
+// the bundle rule (skin/spectral_bundle.h) and every bundle's tables come from one set of
+// spectral walks (ExitTable::buildBundle): levels × bundles × K × N walks in all instead of levels
+// × channels × K × N. The walks must then be the full model (no effect plan). A render samples a
+// band's tables at once (skin/exit_table_bundle.h, SkinMaterial).
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -24,8 +25,10 @@ namespace hylios {
 class SkinTableCache {
  public:
   static constexpr int kTableMelaninLevels = 9;
-  /// The settings the renderer builds its tables with (K = 12 cosine bins, N = 40 000 rays per
-  /// bin).
+  /// The settings the renderer builds its tables with (K = 12 cosine bins, N = 10 000 rays per
+  /// bin: a table's sampling error, 1–2 % of P(subsurface) per bin and a few tenths of a percent
+  /// over a render's bins, is a fixed bias far below its per-pixel noise; docs/interpretations.md,
+  /// "Render tables").
   static skin::ExitTableSettings renderSettings();
 
   SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,

@@ -1,0 +1,183 @@
+// A band's exit tables sampled at once (skin/exit_table_bundle.h, issue 12): for every wavelength
+// the weighted exits have the expectation of that wavelength's own table sampled alone
+// (ExitTable::sample) — the surface and subsurface reflectance within 4 combined standard errors,
+// the exit offsets' distribution (radius groups × side) by a chi-square over the groups' z-scores
+// — in the visible (Rayleigh spread across the band) and the near IR (θo of Algorithm 2 differing
+// across it), at 0°, 45° and 80° incidence, with and without the entry split; weights are finite
+// and non-negative, and mismatched bundles are refused.
+#include "skin/exit_table_bundle.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "skin/core/constants.h"
+#include "skin/core/statistics.h"
+#include "skin/specimen.h"
+#include "tests/support/chi2.h"
+#include "tests/support/test_spectra.h"
+
+using namespace hylios;
+using namespace hylios::skin;
+
+namespace {
+
+constexpr int kRadiusGroups = 5;  // exit radius groups, each split by the sign of the x offset
+constexpr double kGroupEdgesCm[kRadiusGroups - 1] = {0.005, 0.02, 0.06, 0.2};
+
+int offsetGroup(double xCm, double yCm) {
+  const double r = std::hypot(xCm, yCm);
+  int g = 0;
+  while (g < kRadiusGroups - 1 && r >= kGroupEdgesCm[g]) ++g;
+  return 2 * g + (xCm < 0 ? 1 : 0);
+}
+
+/// Per wavelength: surface and subsurface reflectance and the subsurface weight per offset group.
+struct ExitTallies {
+  std::vector<RunningStatistic> surface, subsurface;
+  std::vector<std::vector<RunningStatistic>> groups;  // [λ][group]
+  explicit ExitTallies(std::size_t n)
+      : surface(n), subsurface(n), groups(n, std::vector<RunningStatistic>(2 * kRadiusGroups)) {}
+};
+
+struct Bundle {
+  std::vector<SkinWalk> walks;
+  std::vector<ExitTable> tables;
+  std::vector<SkinOptics> optics;
+  SpectralWalk entryWalk;
+  Bundle(const std::vector<double>& wavelengthsNm, const ExitTableSettings& settings)
+      : walks(makeWalks(wavelengthsNm)),
+        tables(ExitTable::buildBundle(pointers(walks), settings)),
+        optics(opticsOf(walks)),
+        entryWalk(optics) {}
+  static std::vector<SkinWalk> makeWalks(const std::vector<double>& nm) {
+    static const Specimen specimen = loadSpecimen("S1", test::specimenDir());
+    std::vector<SkinWalk> w;
+    for (double x : nm) w.emplace_back(computeSkinOptics(specimen, test::spectra(), x));
+    return w;
+  }
+  static std::vector<const SkinWalk*> pointers(const std::vector<SkinWalk>& w) {
+    std::vector<const SkinWalk*> p;
+    for (const SkinWalk& x : w) p.push_back(&x);
+    return p;
+  }
+  static std::vector<SkinOptics> opticsOf(const std::vector<SkinWalk>& w) {
+    std::vector<SkinOptics> o;
+    for (const SkinWalk& x : w) o.push_back(x.optics());
+    return o;
+  }
+  ExitTableBundle sampler() const {
+    std::vector<const ExitTable*> t;
+    for (const ExitTable& x : tables) t.push_back(&x);
+    return ExitTableBundle(entryWalk, t);
+  }
+};
+
+Vec3 incidence(double degrees) {
+  const double a = degrees * kPi / 180;
+  return {std::sin(a), 0, std::cos(a)};
+}
+
+ExitTallies sampleBundle(const Bundle& b, double degrees, bool split, int paths) {
+  const ExitTableBundle sampler = b.sampler();
+  ExitTallies t(sampler.size());
+  Rng rng(7);
+  SpectralPath path;
+  for (int p = 0; p < paths; ++p) {
+    sampler.sample(incidence(degrees), rng, path, split);
+    for (std::size_t i = 0; i < sampler.size(); ++i) {
+      const double w = path.exitWeight[i];
+      EXPECT_TRUE(std::isfinite(w) && w >= 0) << w;
+      const bool surface = path.end == PathEnd::SurfaceReflection;
+      const double splitWeight = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i];
+      t.surface[i].add((surface ? w : 0.0) + splitWeight);
+      const bool subsurface = path.end == PathEnd::SubsurfaceReflection;
+      t.subsurface[i].add(subsurface ? w : 0.0);
+      const int g = subsurface ? offsetGroup(path.exitOffsetXCm, path.exitOffsetYCm) : -1;
+      for (int k = 0; k < 2 * kRadiusGroups; ++k) t.groups[i][k].add(k == g ? w : 0.0);
+    }
+  }
+  return t;
+}
+
+ExitTallies sampleEachTable(const Bundle& b, double degrees, int paths) {
+  ExitTallies t(b.tables.size());
+  for (std::size_t i = 0; i < b.tables.size(); ++i) {
+    Rng rng(100 + i);
+    for (int p = 0; p < paths; ++p) {
+      const SkinPath path = b.tables[i].sample(incidence(degrees), rng);
+      t.surface[i].add(path.end == PathEnd::SurfaceReflection ? 1.0 : 0.0);
+      const bool subsurface = path.end == PathEnd::SubsurfaceReflection;
+      t.subsurface[i].add(subsurface ? 1.0 : 0.0);
+      const int g = subsurface ? offsetGroup(path.exitOffsetXCm, path.exitOffsetYCm) : -1;
+      for (int k = 0; k < 2 * kRadiusGroups; ++k) t.groups[i][k].add(k == g ? 1.0 : 0.0);
+    }
+  }
+  return t;
+}
+
+double zScore(const RunningStatistic& a, const RunningStatistic& b) {
+  const double sigma = std::hypot(a.standardError(), b.standardError());
+  return sigma > 0 ? (a.mean() - b.mean()) / sigma : (a.mean() == b.mean() ? 0.0 : 1e9);
+}
+
+void expectSameExits(const Bundle& b, double degrees, bool split) {
+  const int paths = 60000;
+  const ExitTallies bundle = sampleBundle(b, degrees, split, paths);
+  const ExitTallies alone = sampleEachTable(b, degrees, paths);
+  double chi2 = 0;
+  int dof = 0;
+  for (std::size_t i = 0; i < b.tables.size(); ++i) {
+    const std::string at = std::to_string(b.optics[i].wavelengthNm) + " nm at " +
+                           std::to_string(degrees) + "°" + (split ? ", split" : "") + ": ";
+    EXPECT_LT(std::fabs(zScore(bundle.surface[i], alone.surface[i])), 4.0)
+        << at << "surface " << bundle.surface[i].mean() << " against " << alone.surface[i].mean();
+    EXPECT_LT(std::fabs(zScore(bundle.subsurface[i], alone.subsurface[i])), 4.0)
+        << at << "subsurface " << bundle.subsurface[i].mean() << " against "
+        << alone.subsurface[i].mean();
+    for (int k = 0; k < 2 * kRadiusGroups; ++k) {
+      if (alone.groups[i][k].sum() < 20) continue;  // too few exits there for a normal z
+      const double z = zScore(bundle.groups[i][k], alone.groups[i][k]);
+      chi2 += z * z;
+      ++dof;
+    }
+  }
+  ASSERT_GT(dof, 10);
+  EXPECT_GT(test::chi2SurvivalProbability(chi2, dof), 1e-3)
+      << "offset groups: chi2 = " << chi2 << " over " << dof << " groups";
+}
+
+ExitTableSettings tableSettings() {
+  ExitTableSettings s;
+  s.cosineBins = 4;
+  s.raysPerBin = 3000;
+  return s;
+}
+
+}  // namespace
+
+// Seven visible channels at once: the Rayleigh optical depth spans a factor of 3.7 across them.
+TEST(ExitTableBundle, VisibleBandHasEachTablesExpectation) {
+  const Bundle b({400, 450, 500, 550, 600, 650, 700}, tableSettings());
+  for (double degrees : {0.0, 45.0, 80.0}) expectSameExits(b, degrees, false);
+  expectSameExits(b, 45.0, true);
+}
+
+// The θo ramp of Algorithm 2 (780–1400 nm) and water's rise: tables that differ widely.
+TEST(ExitTableBundle, NearInfraredBandHasEachTablesExpectation) {
+  const Bundle b({900, 1000, 1100, 1200, 1300}, tableSettings());
+  expectSameExits(b, 0.0, false);
+  expectSameExits(b, 45.0, true);
+}
+
+TEST(ExitTableBundle, RefusesMismatchedTables) {
+  const Bundle b({500, 600}, tableSettings());
+  EXPECT_THROW(ExitTableBundle(b.entryWalk, {&b.tables[0]}), std::invalid_argument);
+  EXPECT_THROW(ExitTableBundle(b.entryWalk, {&b.tables[0], nullptr}), std::invalid_argument);
+  ExitTableSettings other = tableSettings();
+  other.cosineBins = 5;
+  const Bundle c({600}, other);
+  EXPECT_THROW(ExitTableBundle(b.entryWalk, {&b.tables[0], &c.tables[0]}), std::invalid_argument);
+}
