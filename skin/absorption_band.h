@@ -1,7 +1,8 @@
-// A literature band model for an absorber that has no tabulated spectrum (keratin, DNA, urocanic
-// acid): one absorption band, Gaussian in photon energy, with separate widths on its blue
-// (higher-energy) and red sides, normalised to a cited value at a reference wavelength, and zero
-// from a declared wavelength on (where the Gaussian has fallen below 1e-5 of its peak).
+// A literature band model for an absorber that has no tabulated spectrum (urocanic acid; keratin
+// and DNA are sums of measured molecule tables since issue 14): one absorption band, Gaussian in
+// photon energy, with separate widths on its blue (higher-energy) and red sides, normalised to a
+// cited value at a reference wavelength, and zero from a declared wavelength on (where the Gaussian
+// has fallen below 1e-5 of its peak).
 //
 // Parameters and their citations live in assets/spectra/extensions.toml; SOURCES.md ("Extensions")
 // explains how each width follows from a cited absorbance ratio.

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -89,18 +90,19 @@ class Builder {
                                           t.sourceName(), t.minWavelengthNm(), nm));
   }
 
-  PiecewiseSpectrum water(TablePtr segelstein, const char* column, bool absorption) const {
-    requireFrom(*segelstein, x_.domainMinNm);
-    if (segelstein->maxWavelengthNm() < x_.domainMaxNm)
-      throw SpectralDataError(fmt::format("{}: ends at {} nm, before {} nm",
-                                          segelstein->sourceName(), segelstein->maxWavelengthNm(),
-                                          x_.domainMaxNm));
-    const std::size_t col = columnOf(*segelstein, column);
+  /// Water's absorption (μa from the k column) or real index (n column) over the whole domain.
+  PiecewiseSpectrum water(TablePtr table, const char* column, bool absorption,
+                          const char* origin) const {
+    requireFrom(*table, x_.domainMinNm);
+    if (table->maxWavelengthNm() < x_.domainMaxNm)
+      throw SpectralDataError(fmt::format("{}: ends at {} nm, before {} nm", table->sourceName(),
+                                          table->maxWavelengthNm(), x_.domainMaxNm));
+    const std::size_t col = columnOf(*table, column);
     PiecewiseSpectrum s(absorption ? "water" : "water refractive index");
-    PiecewiseSpectrum::Function f = scaledColumn(segelstein, col, 1.0);
+    PiecewiseSpectrum::Function f = scaledColumn(table, col, 1.0);
     if (absorption)  // μa = 4π k / λ, λ in cm
       f = [f](double nm) { return 4.0 * kPi * f(nm) / (nm * 1e-7); };
-    s.append(x_.domainMinNm, x_.domainMaxNm, "Segelstein 1981 table", std::move(f));
+    s.append(x_.domainMinNm, x_.domainMaxNm, origin, std::move(f));
     return s;
   }
 
@@ -258,9 +260,9 @@ class Builder {
     return out;
   }
 
-  /// PhotochemCAD molar table up to its declared end of band, zero beyond.
-  PiecewiseSpectrum carotenoid(Absorber a, const char* file, double molarMass,
-                               double zeroFromNm) const {
+  /// PhotochemCAD molar table × `scale` up to its declared end of band, zero beyond.
+  PiecewiseSpectrum photochemcad(const std::string& substance, const char* file, double scale,
+                                 double zeroFromNm) const {
     const TablePtr t = loadTable(dir_, file);
     requireFrom(*t, x_.domainMinNm);
     if (!(zeroFromNm > x_.domainMinNm && zeroFromNm <= t->maxWavelengthNm()))
@@ -269,7 +271,7 @@ class Builder {
                                           t->maxWavelengthNm()));
     const std::size_t col = columnOf(*t, "molar_extinction_cm-1_M-1");
     Samples used;  // rows before the end of band, then 0 at zeroFromNm
-    used.appendRows(*t, col, kLn10 / molarMass, 0.0, std::nextafter(zeroFromNm, 0.0));
+    used.appendRows(*t, col, scale, 0.0, std::nextafter(zeroFromNm, 0.0));
     for (std::size_t i = 0; i < used.values.size(); ++i)
       if (used.wavelengthsNm[i] >= x_.domainMinNm && used.values[i] < 0)
         throw SpectralDataError(
@@ -277,11 +279,73 @@ class Builder {
                         t->sourceName(), used.wavelengthsNm[i], zeroFromNm));
     used.wavelengthsNm.push_back(zeroFromNm);
     used.values.push_back(0.0);
-    PiecewiseSpectrum s(std::string(absorberName(a)));
+    PiecewiseSpectrum s(substance);
     s.append(x_.domainMinNm, zeroFromNm, "PhotochemCAD table",
              scaledColumn(used.table(t->sourceName()), 0, 1.0));
     s.append(zeroFromNm, x_.domainMaxNm, "declared zero: the band has ended", constant(0.0));
     return s;
+  }
+
+  /// Bilirubin, β-carotene: natural-log absorption per mg/mL from the molar table.
+  PiecewiseSpectrum carotenoid(Absorber a, const char* file, double molarMass,
+                               double zeroFromNm) const {
+    return photochemcad(std::string(absorberName(a)), file, kLn10 / molarMass, zeroFromNm);
+  }
+
+  /// Σ weight_i · molecule_i(λ) up to `endNm` (the last molecule's end of band), zero beyond.
+  PiecewiseSpectrum weightedSum(Absorber a, std::vector<std::pair<double, PiecewiseSpectrum>> terms,
+                                double endNm, const std::string& origin) const {
+    PiecewiseSpectrum s(std::string(absorberName(a)));
+    s.append(x_.domainMinNm, endNm, origin, [terms = std::move(terms)](double nm) {
+      double sum = 0;
+      for (const auto& [weight, molecule] : terms) sum += weight * molecule(nm);
+      return sum;
+    });
+    if (endNm < x_.domainMaxNm)
+      s.append(endNm, x_.domainMaxNm, "declared zero: every molecule's band has ended",
+               constant(0.0));
+    return s;
+  }
+
+  /// Solid keratin per volume fraction: its aromatic amino acids (see extensions.toml [keratin]).
+  PiecewiseSpectrum keratin() const {
+    const KeratinComposition& k = x_.keratin;
+    std::vector<std::pair<double, PiecewiseSpectrum>> terms;
+    double endNm = x_.domainMinNm;
+    for (auto [name, file, m] :
+         {std::tuple{"tyrosine", "tyrosine_photochemcad.csv", k.tyrosine},
+          std::tuple{"tryptophan", "tryptophan_photochemcad.csv", k.tryptophan},
+          std::tuple{"phenylalanine", "phenylalanine_photochemcad.csv", k.phenylalanine}}) {
+      // mg/mL of the amino acid per unit volume fraction of keratin × ζ per mg/mL of it.
+      terms.emplace_back(k.densityMgPerMl * m.share / 100.0,
+                         photochemcad(name, file, kLn10 / m.molarMass, m.zeroFromNm));
+      endNm = std::max(endNm, m.zeroFromNm);
+    }
+    return weightedSum(Absorber::Keratin, std::move(terms), endNm,
+                       "PhotochemCAD tyrosine + tryptophan + phenylalanine (Block 1951 weights)");
+  }
+
+  /// Double-stranded DNA per mg/mL: base-composition-weighted bases, scaled at the reference.
+  PiecewiseSpectrum dna() const {
+    const DnaComposition& d = x_.dna;
+    std::vector<std::pair<double, PiecewiseSpectrum>> terms;  // molar ε (decadic) first
+    double endNm = x_.domainMinNm;
+    for (auto [name, file, m] : {std::tuple{"adenine", "adenine_photochemcad.csv", d.adenine},
+                                 std::tuple{"guanine", "guanine_photochemcad.csv", d.guanine},
+                                 std::tuple{"cytosine", "cytosine_photochemcad.csv", d.cytosine},
+                                 std::tuple{"thymine", "thymine_photochemcad.csv", d.thymine}}) {
+      terms.emplace_back(m.share, photochemcad(name, file, 1.0, m.zeroFromNm));
+      endNm = std::max(endNm, m.zeroFromNm);
+    }
+    double mixAtReference = 0;
+    for (const auto& [share, base] : terms) mixAtReference += share * base(d.referenceNm);
+    if (!(mixAtReference > 0))
+      throw SpectralDataError(fmt::format("DNA: the bases' sum at reference_nm = {} nm is {}",
+                                          d.referenceNm, mixAtReference));
+    const double scale = kLn10 * d.referenceValue / mixAtReference;
+    for (auto& term : terms) term.first *= scale;
+    return weightedSum(Absorber::Dna, std::move(terms), endNm,
+                       "PhotochemCAD A + G + C + T by base composition, scaled at the reference");
   }
 
   PiecewiseSpectrum lipid() const {
@@ -343,18 +407,22 @@ SpectralDatabase SpectralDatabase::load(const std::filesystem::path& spectraDir)
   const Builder build(spectraDir, SpectralExtensions::load(spectraDir / "extensions.toml"));
   const SpectralExtensions& x = build.extensions();
   const TablePtr segelstein = loadTable(spectraDir, "water_refractive_index_segelstein_1981.csv");
-  PiecewiseSpectrum water = build.water(segelstein, "k_imag", true);
+  PiecewiseSpectrum water = build.water(segelstein, "k_imag", true, "Segelstein 1981 table");
   std::vector<PiecewiseSpectrum> hemoglobins = build.hemoglobins(build.hemoglobinFloor(water));
 
   auto impl = std::make_unique<Impl>();
-  impl->waterIndex = build.water(segelstein, "n_real", false);
+  // The layers' dispersion follows Hale & Querry's n (docs/interpretations.md, "Refractive indices
+  // away from 1300 nm"); water's absorption keeps Segelstein's finer k table.
+  impl->waterIndex =
+      build.water(loadTable(spectraDir, "water_refractive_index_hale_querry_1973.csv"), "n_real",
+                  false, "Hale & Querry 1973 table");
   for (Absorber a : kAllAbsorbers) {
     switch (a) {
       case Absorber::Keratin:
-        impl->spectra.push_back(build.band(a, x.keratin));
+        impl->spectra.push_back(build.keratin());
         break;
       case Absorber::Dna:
-        impl->spectra.push_back(build.band(a, x.dna));
+        impl->spectra.push_back(build.dna());
         break;
       case Absorber::UrocanicAcid:
         impl->spectra.push_back(build.band(a, x.urocanicAcid));

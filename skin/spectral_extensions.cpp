@@ -86,19 +86,38 @@ class SectionReader {
 };
 
 void rejectUnknownSections(const toml::table& root, const std::filesystem::path& file) {
-  const std::set<std::string> known = {"domain",    "melanin",       "hemoglobin", "lipid",
-                                       "bilirubin", "beta_carotene", "band"};
+  const std::set<std::string> known = {"domain", "melanin",   "hemoglobin",
+                                       "lipid",  "bilirubin", "keratin",
+                                       "dna",    "band",      "beta_carotene"};
   for (const auto& [key, node] : root)
     if (known.count(std::string(key.str())) == 0)
       throw SpectralDataError(
           fmt::format("{}: unknown section or key '{}'", position(file, node.source()), key.str()));
-  const toml::table* bands = root["band"].as_table();
-  const std::set<std::string> knownBands = {"keratin", "dna", "urocanic_acid"};
-  if (bands != nullptr)
-    for (const auto& [key, node] : *bands)
-      if (knownBands.count(std::string(key.str())) == 0)
-        throw SpectralDataError(
-            fmt::format("{}: unknown band [band.{}]", position(file, node.source()), key.str()));
+  const std::pair<const char*, std::set<std::string>> subsections[] = {
+      {"band", {"urocanic_acid"}},
+      {"keratin", {"tyrosine", "tryptophan", "phenylalanine"}},
+      {"dna", {"adenine", "guanine", "cytosine", "thymine"}}};
+  for (const auto& [section, names] : subsections)
+    if (const toml::table* table = root[section].as_table())
+      for (const auto& [key, node] : *table)
+        if (node.is_table() && names.count(std::string(key.str())) == 0)
+          throw SpectralDataError(fmt::format("{}: unknown table [{}.{}]",
+                                              position(file, node.source()), section, key.str()));
+}
+
+/// [<parent>.<name>]: zero_from_nm and, for a mass-weighted molecule (keratin's amino acids), its
+/// g_per_100g and molar_mass_g_per_mol. DNA's bases are weighted by mole fraction: no mass needed.
+MoleculeShare readMolecule(const toml::table& root, const std::string& section, bool massWeighted,
+                           const std::filesystem::path& file) {
+  SectionReader reader(root, section, file);
+  MoleculeShare m;
+  if (massWeighted) {
+    m.share = reader.positive("g_per_100g");
+    m.molarMass = reader.positive("molar_mass_g_per_mol");
+  }
+  m.zeroFromNm = reader.positive("zero_from_nm");
+  reader.rejectUnknownKeys();
+  return m;
 }
 
 void requireOrdered(double low, double high, const char* what, const std::filesystem::path& file) {
@@ -147,8 +166,24 @@ SpectralExtensions readExtensions(const toml::table& root, const std::filesystem
                 {{"molar_mass_g_per_mol", &x.betaCaroteneMolarMass},
                  {"zero_from_nm", &x.betaCaroteneZeroFromNm}});
 
-  x.keratin = SectionReader(root, "band.keratin", tomlFile).band();
-  x.dna = SectionReader(root, "band.dna", tomlFile).band();
+  readPositives(root, "keratin", tomlFile, {{"density_mg_per_ml", &x.keratin.densityMgPerMl}});
+  for (auto [name, molecule] :
+       {std::pair{"tyrosine", &x.keratin.tyrosine}, std::pair{"tryptophan", &x.keratin.tryptophan},
+        std::pair{"phenylalanine", &x.keratin.phenylalanine}})
+    *molecule = readMolecule(root, std::string("keratin.") + name, true, tomlFile);
+
+  readPositives(root, "dna", tomlFile,
+                {{"gc_fraction", &x.dna.gcFraction},
+                 {"reference_nm", &x.dna.referenceNm},
+                 {"reference_value", &x.dna.referenceValue}});
+  requireOrdered(x.dna.gcFraction, 1.0, "[dna] gc_fraction", tomlFile);
+  for (auto [name, molecule] :
+       {std::pair{"adenine", &x.dna.adenine}, std::pair{"guanine", &x.dna.guanine},
+        std::pair{"cytosine", &x.dna.cytosine}, std::pair{"thymine", &x.dna.thymine}})
+    *molecule = readMolecule(root, std::string("dna.") + name, false, tomlFile);
+  x.dna.guanine.share = x.dna.cytosine.share = x.dna.gcFraction / 2.0;
+  x.dna.adenine.share = x.dna.thymine.share = (1.0 - x.dna.gcFraction) / 2.0;
+
   x.urocanicAcid = SectionReader(root, "band.urocanic_acid", tomlFile).band();
   return x;
 }

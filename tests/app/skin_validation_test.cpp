@@ -55,7 +55,8 @@ double ncsuRms(const std::string& specimen, const std::string& object, double* w
 
 // Paper Fig. 7: "computed using the pigmentation datasets S1 and S2" for NCSU curves 117 (left)
 // and 113 (right). The project's goal is an RMS difference ≤ 0.03. Measured at this commit:
-// S1/117 ≈ 0.031, S2/113 ≈ 0.045 (the model is darker than object 113 above 600 nm). The bounds
+// S1/117 ≈ 0.031, S2/113 ≈ 0.044 (the model is darker than object 113 above 600 nm; 0.045 before
+// the layers' dispersion followed Hale & Querry, docs/uv-absorbers.md). The bounds
 // below are those values plus 3× the largest per-point σ (≈ 0.0036 at 2e4 rays): they catch a
 // regression of the model without pretending the goal is met for S2.
 TEST(SkinValidation, S1MatchesNcsuObject117) {
@@ -69,7 +70,7 @@ TEST(SkinValidation, S2MatchesNcsuObject113) {
   double sigma = 0;
   const double rms = ncsuRms("S2", "obj113", &sigma);
   std::cout << "S2 vs NCSU obj113: RMS " << rms << " (max point σ " << sigma << ")\n";
-  EXPECT_LT(rms, 0.045 + 3 * sigma);
+  EXPECT_LT(rms, 0.044 + 3 * sigma);
 }
 
 // Paper Fig. 9 (top): S3 at 8° shows the water valleys at 1450 and 1940 nm and the

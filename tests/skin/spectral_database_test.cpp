@@ -1,5 +1,6 @@
 // Tests of the spectral database: hand-computed values from table rows, the declared extensions
-// (continuity, band constraints, zero beyond bands), coverage errors, and load errors.
+// (continuity, the urocanic acid band's constraints, zero beyond bands), coverage errors, and load
+// errors. Keratin, DNA and the water index: uv_absorber_tables_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,8 +52,7 @@ TEST(SpectralDatabase, WaterAt1450nmFromSegelsteinK) {
   // Segelstein rows 1449 nm (k = 3.637e-4) and 1459 nm (k = 3.604e-4): k(1450) = 3.6337e-4,
   // μa = 4π k / λ = 4π · 3.6337e-4 / 1.450e-4 cm = 31.491 cm⁻¹.
   EXPECT_NEAR(mu(Absorber::Water, 1450.0), 31.491, 1e-3);
-  // Row 1449 nm exactly: n = 1.313055.
-  EXPECT_DOUBLE_EQ(database().waterRefractiveIndex(1449.0), 1.313055);
+  // The real index is Hale & Querry's (uv_absorber_tables_test.cpp), not Segelstein's.
 }
 
 TEST(SpectralDatabase, MelaninPowerLawsAreContinuousAtTheTableEdge) {
@@ -109,25 +109,14 @@ TEST(SpectralDatabase, ConcentrationUnits) {
     EXPECT_EQ(SpectralDatabase::concentrationUnit(a), U::MassConcentration) << absorberName(a);
 }
 
-TEST(SpectralDatabase, BandModelsMeetTheirCitedConstraints) {
-  // DNA: A260 = 1 for 50 µg/mL over 1 cm ⇒ 20 cm⁻¹/(mg/mL) decadic; A260/A280 = 1.9.
-  EXPECT_NEAR(mu(Absorber::Dna, 260.0), kLn10 * 20.0, 1e-9);
-  EXPECT_NEAR(mu(Absorber::Dna, 260.0) / mu(Absorber::Dna, 280.0), 1.9, 1e-3);
-  // trans-urocanic acid: ε(268 nm) = 18,800 M⁻¹cm⁻¹; 1 % of the peak at 340 nm.
+TEST(SpectralDatabase, UrocanicAcidBandMeetsItsCitedConstraints) {
+  // trans-urocanic acid (band model, no table found): ε(268 nm) = 18,800 M⁻¹cm⁻¹; 1 % of the peak
+  // at 340 nm; zero from 430 nm. Keratin and DNA are tables: uv_absorber_tables_test.cpp.
   EXPECT_NEAR(mu(Absorber::UrocanicAcid, 268.0), kLn10 * 18800.0, 1e-6);
   EXPECT_NEAR(mu(Absorber::UrocanicAcid, 340.0) / mu(Absorber::UrocanicAcid, 268.0), 0.01, 1e-5);
-  // Keratin: A280 = 1 per mg/mL × 1300 mg/mL; A260/A280 = 0.57; 1 % of the 278.5 nm peak at 310 nm.
-  EXPECT_NEAR(mu(Absorber::Keratin, 280.0), kLn10 * 1300.0, 1e-6);
-  EXPECT_NEAR(mu(Absorber::Keratin, 260.0) / mu(Absorber::Keratin, 280.0), 0.57, 1e-4);
-  EXPECT_NEAR(mu(Absorber::Keratin, 310.0) / mu(Absorber::Keratin, 278.5), 0.01, 1e-5);
-  EXPECT_GT(mu(Absorber::Keratin, 278.5), mu(Absorber::Keratin, 280.0));
-  // Zero beyond the declared band ends (keratin 350, DNA 420, urocanic acid 430 nm).
-  for (auto [a, zeroNm] : {std::pair{Absorber::Keratin, 350.0}, std::pair{Absorber::Dna, 420.0},
-                           std::pair{Absorber::UrocanicAcid, 430.0}}) {
-    EXPECT_EQ(mu(a, zeroNm), 0.0) << absorberName(a);
-    EXPECT_EQ(mu(a, 1000.0), 0.0) << absorberName(a);
-    EXPECT_GT(mu(a, zeroNm - 1.0), 0.0) << absorberName(a);
-  }
+  EXPECT_EQ(mu(Absorber::UrocanicAcid, 430.0), 0.0);
+  EXPECT_EQ(mu(Absorber::UrocanicAcid, 1000.0), 0.0);
+  EXPECT_GT(mu(Absorber::UrocanicAcid, 429.0), 0.0);
 }
 
 TEST(SpectralDatabase, CarotenoidsFollowTheirTablesThenEndAtZero) {
@@ -223,8 +212,21 @@ TEST_F(SpectralDatabaseLoadTest, UnknownExtensionKeyNamesFileAndLine) {
 }
 
 TEST_F(SpectralDatabaseLoadTest, BandCutTooEarlyIsRefused) {
-  replaceInFile("extensions.toml", "zero_from_nm = 350.0", "zero_from_nm = 300.0");
-  EXPECT_NE(loadError().find("keratin"), std::string::npos);
+  replaceInFile("extensions.toml", "zero_from_nm = 430.0", "zero_from_nm = 300.0");
+  EXPECT_NE(loadError().find("urocanic_acid"), std::string::npos);
+}
+
+TEST_F(SpectralDatabaseLoadTest, MoleculeEndBeyondItsTableIsRefused) {
+  // [keratin.tyrosine] ends with its table at 350 nm; 360 nm lies beyond the table.
+  replaceInFile("extensions.toml", "zero_from_nm = 350.0", "zero_from_nm = 360.0");
+  const std::string message = loadError();
+  EXPECT_NE(message.find("tyrosine_photochemcad.csv"), std::string::npos) << message;
+}
+
+TEST_F(SpectralDatabaseLoadTest, UnknownMoleculeTableIsRefused) {
+  replaceInFile("extensions.toml", "[keratin.phenylalanine]", "[keratin.cystine]");
+  const std::string message = loadError();
+  EXPECT_NE(message.find("keratin.cystine"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -28,7 +28,8 @@ TEST(SpectralExtensions, ParseGivesTheSameValuesAsLoad) {
   EXPECT_EQ(parsed.domainMaxNm, loaded.domainMaxNm);
   EXPECT_EQ(parsed.hemoglobinDecayLengthNm, loaded.hemoglobinDecayLengthNm);
   EXPECT_EQ(parsed.betaCaroteneZeroFromNm, loaded.betaCaroteneZeroFromNm);
-  EXPECT_EQ(parsed.keratin.peakNm, loaded.keratin.peakNm);
+  EXPECT_EQ(parsed.keratin.tryptophan.share, loaded.keratin.tryptophan.share);
+  EXPECT_EQ(parsed.dna.thymine.share, loaded.dna.thymine.share);
   EXPECT_EQ(parsed.urocanicAcid.zeroFromNm, loaded.urocanicAcid.zeroFromNm);
 }
 
