@@ -1,13 +1,14 @@
-// Tests of the measured UV tables (issue 14): each PhotochemCAD molecule table loads with its unit
-// column and gives its row at a named wavelength; keratin (aromatic amino acids weighted by Block
-// 1951's composition) and DNA (bases weighted by base composition, scaled to A260 = 20 per mg/mL)
-// give the hand-computed sums; each ends at its declared zero; the layers' dispersion reads Hale &
-// Querry's n. Hand values are computed from the rows quoted in each comment.
+// Tests of the measured UV tables (issue 14): each PhotochemCAD molecule table (one test each)
+// loads with its unit column, its range and its row at a named wavelength; keratin (aromatic amino
+// acids weighted by Block 1951's composition) and DNA (bases weighted by base composition, scaled
+// to A260 = 20 per mg/mL) give the hand-computed sums; each ends at its declared zero; the layers'
+// dispersion reads Hale & Querry's n. Hand values are computed from the rows quoted in comments.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 #include "skin/spectral_database.h"
@@ -56,13 +57,26 @@ const TableRow kRows[] = {
     {"thymine_photochemcad.csv", 260.0, 7549.7, 220.0, 350.0},
 };
 
-TEST(UvAbsorberTables, EachMoleculeTableLoadsWithItsUnitAndRows) {
-  for (const TableRow& row : kRows) {
-    const SpectralTable t = SpectralTable::loadCsv(spectraDir() / row.file);
-    EXPECT_EQ(t.minWavelengthNm(), row.firstNm) << row.file;
-    EXPECT_EQ(t.maxWavelengthNm(), row.lastNm) << row.file;
-    EXPECT_EQ(molarExtinction(row.file, row.nm), row.value) << row.file;
-  }
+void PrintTo(const TableRow& row, std::ostream* out) { *out << row.file; }
+
+// One test per table: it loads, has the one unit column, its range, and the quoted row.
+class MoleculeTable : public ::testing::TestWithParam<TableRow> {};
+
+TEST_P(MoleculeTable, LoadsWithItsUnitRangeAndRow) {
+  const TableRow& row = GetParam();
+  const SpectralTable t = SpectralTable::loadCsv(spectraDir() / row.file);
+  EXPECT_EQ(t.minWavelengthNm(), row.firstNm);
+  EXPECT_EQ(t.maxWavelengthNm(), row.lastNm);
+  EXPECT_EQ(molarExtinction(row.file, row.nm), row.value);
+}
+
+INSTANTIATE_TEST_SUITE_P(UvAbsorberTables, MoleculeTable, ::testing::ValuesIn(kRows),
+                         [](const ::testing::TestParamInfo<TableRow>& p) {
+                           const std::string file = p.param.file;
+                           return file.substr(0, file.find('_'));
+                         });
+
+TEST(UvAbsorberTables, PhotochemcadScalingsAreThoseOfItsRecords) {
   // The PhotochemCAD scalings (records F03, F05, F06, F07): ε = 1405 at 274.8 nm (tyrosine),
   // 5579 at 279 nm (tryptophan), 13,000 at 260.5 nm (adenine), 10,700 at 246 nm (guanine).
   EXPECT_NEAR(molarExtinction("tyrosine_photochemcad.csv", 274.75) / 1405.0, 1.0, 0.01);
