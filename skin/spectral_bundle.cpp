@@ -48,7 +48,12 @@ std::vector<std::vector<std::size_t>> groupIntoBundles(const std::vector<SkinOpt
     bool fits = !bundles.empty() && bundles.back().size() < rule.maxWavelengths;
     if (fits) {
       const Range a = angle.with(theta), r = rayleigh.with(tau);
+      // A run of members with one θo > 0 (the plateau below the ramp) takes no other θo: the
+      // plateau's equal laws would dominate the balance heuristic and starve the ramp's members.
+      const bool plateau =
+          bundles.back().size() > 1 && angle.lowest == angle.highest && angle.lowest > 0;
       fits = (a.lowest == 0) == (a.highest == 0) && a.logSpread() <= rule.maxLogAngleSpread &&
+             !(plateau && theta != angle.lowest) &&
              std::min(r.logSpread(), r.highest - r.lowest) <= rule.maxRayleighSpread &&
              (walk.roughSurface || n == surfaceIndex);
       if (fits) angle = a, rayleigh = r;

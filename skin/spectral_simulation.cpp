@@ -46,6 +46,9 @@ SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
   spectral.walk.tabulatedMelanosomes = true;
   spectral.walk.splitEntryReflection = true;
   spectral.tally = run.tally;
+  // Curves: a tighter Rayleigh bound than the tables' (skin/spectral_bundle.h), so that no edge
+  // of a visible bundle has a standard error above the analog walk's.
+  spectral.bundles.maxRayleighSpread = 0.8;
   return spectral;
 }
 

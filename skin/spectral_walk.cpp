@@ -248,18 +248,21 @@ void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
   const unsigned count =
       m.inComplexes ? m.wholeCount + (rng.uniform() < m.fractionalCount ? 1u : 0u) : 1u;
   double chordsOverA = 0;
-  for (unsigned i = 0; i < count; ++i) {
-    if (m.table) {
-      const std::vector<float>& lengths = m.table->pathLengthsSingle();
-      const auto pick =
-          static_cast<std::size_t>(rng.uniform() * static_cast<double>(lengths.size()));
-      chordsOverA += lengths[std::min(pick, lengths.size() - 1)];
-    } else {
+  if (m.table) {  // a local sum, so that the table's loads (cache misses) overlap
+    const std::vector<float>& lengths = m.table->pathLengthsSingle();
+    const float* table = lengths.data();
+    const std::size_t last = lengths.size() - 1;
+    const double size = static_cast<double>(lengths.size());
+    double sum = 0;
+    for (unsigned i = 0; i < count; ++i)
+      sum += table[std::min(static_cast<std::size_t>(rng.uniform() * size), last)];
+    chordsOverA = sum;
+  } else {
+    for (unsigned i = 0; i < count; ++i)
       walkInsideMelanosome(m.geometry, rng, [&chordsOverA](double chord) {
         chordsOverA += chord;
         return false;  // absorption is a weight: the internal path always runs to its end
       });
-    }
   }
   s.stayMelaninCm += chordsOverA * m.semiMinorAxisCm;
   const PolarCosSin theta =

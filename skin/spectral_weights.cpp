@@ -31,6 +31,55 @@ inline double fresnelReflectance(double cosThetaIncident, double n1, double n2, 
   cosT = same ? cosI : root;
   return same ? 0.0 : (total ? 1.0 : reflectance);
 }
+
+template <bool kForced>
+__attribute__((always_inline)) inline void refractionDensities(std::size_t n, const Vec3& d,
+                                                               const Vec3& t, const Vec3& macro,
+                                                               const double* index, bool fromInside,
+                                                               double aspectSquared,
+                                                               double* __restrict logDensity,
+                                                               double* __restrict proposalOffset) {
+  // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
+  const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
+  const double dx = d.x, dy = d.y, dz = d.z, tx = t.x, ty = t.y, tz = t.z;
+  const double mx = macro.x, my = macro.y, mz = macro.z;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ni = index[i];
+    const double n1 = inside * ni + outside, n2 = outside * ni + inside;  // exact: 0 or 1 factors
+    // The facet that refracts d into t for these indices: the generalised half vector n1·d − n2·t.
+    double hx = dx * n1 - tx * n2, hy = dy * n1 - ty * n2, hz = dz * n1 - tz * n2;
+    const double length = std::sqrt(hx * hx + hy * hy + hz * hz);
+    const bool hasLength = length > 0;
+    const double inverse = 1.0 / (hasLength ? length : 1.0);
+    hx = hx * inverse, hy = hy * inverse, hz = hz * inverse;
+    const bool flip = dx * hx + dy * hy + dz * hz > 0;
+    hx = flip ? hx * -1.0 : hx, hy = flip ? hy * -1.0 : hy, hz = flip ? hz * -1.0 : hz;
+    const double cosD = dx * hx + dy * hy + dz * hz, cosT = tx * hx + ty * hy + tz * hz;
+    const double cosFacet = hx * mx + hy * my + hz * mz;  // the facet's polar angle about macro
+    double cosTransmitted;
+    const double reflectance = fresnelReflectance(cosD, n1, n2, cosTransmitted);
+    // Where that facet exists: facing, with some transmission (the conditions as 0/1 doubles:
+    // GCC 12 does not vectorise this loop with a conjunction of bools).
+    const double okLength = hasLength ? 1.0 : 0.0, okT = cosT < 0 ? 1.0 : 0.0;
+    const double okFacet = cosFacet > 0 ? 1.0 : 0.0, okF = reflectance < 1.0 ? 1.0 : 0.0;
+    const bool valid = okLength * okT * okFacet * okF > 0.5;
+    const double sin2 = (1.0 - cosFacet) * (1.0 + cosFacet);
+    const double facetDensity = aspectSquared * cosFacet * cosFacet + sin2;  // D ∝ this⁻²
+    const double jacobianDenominator = n1 * cosD - n2 * cosT;
+    // (1 − F)·n2²|cos t| / (n1 cos d − n2 cos t)² in one log: each factor is bounded (the
+    // denominator is ≥ |n1 − n2|·|cos t| for a refraction); the facet density, which a small
+    // aspect ratio makes extreme, in its own.
+    const double transmitted = 1.0 - reflectance;
+    const double logTransmitted = kForced ? vectorLog(transmitted) : 0.0;
+    const double logDensityHere = vectorLog(transmitted * (n2 * n2 * std::fabs(cosT)) /
+                                            (jacobianDenominator * jacobianDenominator)) -
+                                  2.0 * vectorLog(facetDensity);
+    logDensity[i] = valid ? logDensity[i] + logDensityHere : -HUGE_VAL;
+    // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
+    // lacks its (1 − F), which the MIS denominator must not hold either.
+    if (kForced) proposalOffset[i] -= valid ? logTransmitted : 0.0;
+  }
+}
 }  // namespace
 
 HYLIOS_VECTOR_CLONES
@@ -130,43 +179,12 @@ HYLIOS_VECTOR_CLONES
 void addRefractionDensities(std::size_t n, const Vec3& d, const Vec3& t, const Vec3& macro,
                             const double* index, bool fromInside, double aspectSquared, bool forced,
                             double* __restrict logDensity, double* __restrict proposalOffset) {
-  // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
-  const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
-  const double dx = d.x, dy = d.y, dz = d.z, tx = t.x, ty = t.y, tz = t.z;
-  const double mx = macro.x, my = macro.y, mz = macro.z;
-  const double forcedFactor = forced ? 1.0 : 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double ni = index[i];
-    const double n1 = inside * ni + outside, n2 = outside * ni + inside;  // exact: 0 or 1 factors
-    // The facet that refracts d into t for these indices: the generalised half vector n1·d − n2·t.
-    double hx = dx * n1 - tx * n2, hy = dy * n1 - ty * n2, hz = dz * n1 - tz * n2;
-    const double length = std::sqrt(hx * hx + hy * hy + hz * hz);
-    const bool hasLength = length > 0;
-    const double inverse = 1.0 / (hasLength ? length : 1.0);
-    hx = hx * inverse, hy = hy * inverse, hz = hz * inverse;
-    const bool flip = dx * hx + dy * hy + dz * hz > 0;
-    hx = flip ? hx * -1.0 : hx, hy = flip ? hy * -1.0 : hy, hz = flip ? hz * -1.0 : hz;
-    const double cosD = dx * hx + dy * hy + dz * hz, cosT = tx * hx + ty * hy + tz * hz;
-    const double cosFacet = hx * mx + hy * my + hz * mz;  // the facet's polar angle about macro
-    double cosTransmitted;
-    const double reflectance = fresnelReflectance(cosD, n1, n2, cosTransmitted);
-    // Where that facet exists: facing, with some transmission (the conditions as 0/1 doubles:
-    // GCC 12 does not vectorise this loop with a conjunction of bools).
-    const double okLength = hasLength ? 1.0 : 0.0, okT = cosT < 0 ? 1.0 : 0.0;
-    const double okFacet = cosFacet > 0 ? 1.0 : 0.0, okF = reflectance < 1.0 ? 1.0 : 0.0;
-    const bool valid = okLength * okT * okFacet * okF > 0.5;
-    const double sin2 = (1.0 - cosFacet) * (1.0 + cosFacet);
-    const double facetDensity = aspectSquared * cosFacet * cosFacet + sin2;  // D ∝ this⁻²
-    const double jacobianDenominator = n1 * cosD - n2 * cosT;
-    const double logTransmitted = vectorLog(1.0 - reflectance);
-    const double logDensityHere = -2.0 * vectorLog(facetDensity) + logTransmitted +
-                                  vectorLog(n2 * n2 * std::fabs(cosT)) -
-                                  2.0 * vectorLog(std::fabs(jacobianDenominator));
-    logDensity[i] = valid ? logDensity[i] + logDensityHere : -HUGE_VAL;
-    // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
-    // lacks its (1 − F), which the MIS denominator must not hold either.
-    proposalOffset[i] -= valid ? forcedFactor * logTransmitted : 0.0;
-  }
+  if (forced)
+    refractionDensities<true>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
+                              proposalOffset);
+  else
+    refractionDensities<false>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
+                               proposalOffset);
 }
 
 }  // namespace hylios::skin::spectral_weights
