@@ -3,14 +3,11 @@
 #include <cmath>
 
 namespace hylios::skin {
-namespace {
-constexpr int kMaxNormalRedraws = 16;
-}  // namespace
 
 RoughSurface::RoughSurface(double aspectRatio) : polar_(aspectRatio) {}
 
 Vec3 RoughSurface::facingNormal(const Vec3& direction, const Vec3& macroNormal, Rng& rng) const {
-  for (int attempt = 0; attempt < kMaxNormalRedraws; ++attempt) {
+  for (int attempt = 0; attempt < kMaxFacetRedraws; ++attempt) {
     const PolarCosSin theta = polar_.sample(rng);
     const Azimuth phi = sampleAzimuth(rng);
     const Vec3 m =

@@ -19,6 +19,8 @@
 namespace hylios::skin {
 
 inline constexpr int kMaxSurfaceBounces = 64;
+/// Facet normals drawn per attempt until one faces the ray; after that the macro normal is used.
+inline constexpr int kMaxFacetRedraws = 16;
 
 class RoughSurface {
  public:

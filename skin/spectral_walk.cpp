@@ -18,7 +18,6 @@ namespace hylios::skin {
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// Redraws of a facet normal that faces away from the ray (as RoughSurface::facingNormal).
-constexpr int kMaxFacetRedraws = 16;
 /// Relative tolerance on index ratios that must be equal across the bundle (rounding only).
 constexpr double kRatioTolerance = 1e-9;
 

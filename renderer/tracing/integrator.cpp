@@ -227,14 +227,15 @@ void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, Sa
 
 void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughput,
                            const PathSpectrum& spectrum, SampleStream& samples, RenderStats& stats,
-                           double* L, bool splitFirstSkinHit) const {
+                           double* L, bool splitFirstSkinHit, double firstPdf) const {
   const std::size_t n = spectrum.size();
   const int maxDepth = scene_.integrator.maxDepth;
   std::vector<double> albedoStore(n, 0.0);
   double* beta = throughput.data();
   double* albedo = albedoStore.data();
-  bool lastSpecular = true;  // camera, dielectric or skin surface reflection: emitters count fully
-  double lastPdf = 0;        // density (sr⁻¹) of the continued direction, for MIS at emitters
+  // Camera, dielectric or skin surface reflection (no density): emitters count fully.
+  bool lastSpecular = !(firstPdf > 0);
+  double lastPdf = firstPdf;  // density (sr⁻¹) of the continued direction, for MIS at emitters
   glm::dvec3 lastPoint = ray.origin;
   auto anyThroughput = [&] { return std::any_of(beta, beta + n, [](double b) { return b > 0; }); };
   for (int depth = firstDepth;; ++depth) {
@@ -281,7 +282,7 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       if (s.surfaceBranch) {
         for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
         SampleStream branch = samples.branch();
-        traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth,
+        traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth, before,
                            std::move(surface), spectrum, branch, stats, L);
       }
       if (s.kind == SkinScatter::Kind::Absorbed) {
@@ -349,23 +350,35 @@ double Integrator::radiance(const Ray& ray, std::size_t channel, skin::Rng& rng,
 
 void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit,
                                     const glm::dvec3& incident, const glm::dvec3& direction,
-                                    int depth, std::vector<double> beta,
-                                    const PathSpectrum& spectrum, SampleStream& samples,
-                                    RenderStats& stats, double* L) const {
+                                    int depth, const std::vector<double>& arriving,
+                                    std::vector<double> beta, const PathSpectrum& spectrum,
+                                    SampleStream& samples, RenderStats& stats, double* L) const {
   ++stats.skinSurfaceExits;
   const FacingNormals facing = faceTheRay(incident, hit.geometricNormal, hit.shadingNormal);
-  addDirect(directLight(hit.position, facing.geometric, samples, true,
-                        [&](const glm::dvec3& w) {
-                          return skin.surfaceLobeDensity(incident, facing.shading, w);
-                        }),
-            spectrum, beta.data(), nullptr, L);
+  // The branch's lobe is F_λ(h)·p(ω), p its own sampling density (SkinMaterial::
+  // surfaceBranchDensity): next-event estimation of every light with it, and the continuation
+  // below, are combined by the power heuristic.
+  const auto density = [&](const glm::dvec3& w) {
+    return skin.surfaceBranchDensity(incident, facing.shading, w);
+  };
+  const std::optional<DirectSample> direct =
+      directLight(hit.position, facing.geometric, samples, false, density);
+  if (direct) {
+    const glm::dvec3 h = glm::normalize(direct->light.direction - incident);
+    const double cosFacet = -glm::dot(incident, h);
+    thread_local std::vector<double> fresnel;
+    fresnel.resize(spectrum.size());
+    for (std::size_t i = 0; i < spectrum.size(); ++i)
+      fresnel[i] = skin.surfaceFresnel(spectrum[i], cosFacet);
+    addDirect(direct, spectrum, arriving.data(), fresnel.data(), L);
+  }
   if (!(glm::dot(direction, facing.geometric) > 0)) {
     ++stats.belowSurface;
     return;
   }
   tracePath(
       spawn(hit.position, facing.geometric, direction, std::numeric_limits<double>::infinity()),
-      depth + 1, std::move(beta), spectrum, samples, stats, L, false);
+      depth + 1, std::move(beta), spectrum, samples, stats, L, false, density(direction));
 }
 
 SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,

@@ -8,6 +8,8 @@
 #include "renderer/tracing/surface_vectors.h"
 #include "skin/core/constants.h"
 #include "skin/core/vector3.h"
+#include "skin/fresnel.h"
+#include "skin/rough_surface.h"
 #include "skin/sampling/surface_normal_sampling.h"
 
 namespace hylios {
@@ -41,6 +43,30 @@ double facetReflectionLeaves(double s, double cosIncident) {
       if (out.z < 0) ++leaving;
     }
   return static_cast<double>(leaving) / (kLobeTableStrata * kLobeTableStrata);
+}
+
+/// P_f(cosθ_i): probability that a facet drawn from P_s faces the ray (the walk's redraw test).
+double facetFaces(double s, double cosIncident) {
+  const double sinIncident = std::sqrt(std::max(0.0, 1 - cosIncident * cosIncident));
+  const skin::Vec3 d{sinIncident, 0, cosIncident};
+  int facing = 0;
+  for (int i = 0; i < kLobeTableStrata; ++i)
+    for (int j = 0; j < kLobeTableStrata; ++j) {
+      const double theta = skin::sampleSurfaceNormalPolar(s, (i + 0.5) / kLobeTableStrata);
+      const double phi = 2 * kPi * (j + 0.5) / kLobeTableStrata;
+      const skin::Vec3 m{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                         -std::cos(theta)};
+      if (skin::dot(d, m) < 0) ++facing;
+    }
+  return static_cast<double>(facing) / (kLobeTableStrata * kLobeTableStrata);
+}
+
+/// Linear interpolation in a table over cosθ = i / (size − 1).
+double interpolateOverCosine(const std::vector<double>& table, double cosine) {
+  const double x = std::clamp(cosine, 0.0, 1.0) * static_cast<double>(table.size() - 1);
+  const std::size_t i = std::min(static_cast<std::size_t>(x), table.size() - 2);
+  const double f = x - static_cast<double>(i);
+  return (1 - f) * table[i] + f * table[i + 1];
 }
 
 }  // namespace
@@ -100,9 +126,14 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
         for (std::size_t channel : bundles[b]) members.push_back(&tables_->table(channel, level));
         tableBundles_.emplace_back(walks_->spectralWalk(b, level), std::move(members));
       }
-  for (int i = 0; i < kLobeTableSize; ++i)
-    lobeNormalisation_.push_back(
-        facetReflectionLeaves(aspectRatio_, static_cast<double>(i) / (kLobeTableSize - 1)));
+  for (int i = 0; i < kLobeTableSize; ++i) {
+    const double cosine = static_cast<double>(i) / (kLobeTableSize - 1);
+    lobeNormalisation_.push_back(facetReflectionLeaves(aspectRatio_, cosine));
+    facetFacing_.push_back(facetFaces(aspectRatio_, cosine));
+  }
+  for (std::size_t c = 0; c < walks_->channels(); ++c)
+    surfaceIndex_.push_back(
+        walks_->walk(c, 0).optics()[skin::Layer::StratumCorneum].refractiveIndex);
 }
 
 double SkinMaterial::melaninMultiplier(const SurfaceHit& hit) const {
@@ -115,11 +146,26 @@ double SkinMaterial::melaninMultiplier(const SurfaceHit& hit) const {
 }
 
 double SkinMaterial::surfaceLobeNormalisation(double cosIncident) const {
-  const double x = std::clamp(cosIncident, 0.0, 1.0) * (kLobeTableSize - 1);
-  const int i = std::min(static_cast<int>(x), kLobeTableSize - 2);
-  const double f = x - i;
-  return (1 - f) * lobeNormalisation_[static_cast<std::size_t>(i)] +
-         f * lobeNormalisation_[static_cast<std::size_t>(i) + 1];
+  return interpolateOverCosine(lobeNormalisation_, cosIncident);
+}
+
+double SkinMaterial::surfaceBranchDensity(const glm::dvec3& incident, const glm::dvec3& normal,
+                                          const glm::dvec3& outgoing) const {
+  const double cosIn = -glm::dot(incident, normal), cosOut = glm::dot(outgoing, normal);
+  if (!(cosIn > 0) || !(cosOut > 0)) return 0;
+  const glm::dvec3 halfVector = glm::normalize(outgoing - incident);
+  const double cosFacet = glm::dot(halfVector, normal);
+  const double faces = interpolateOverCosine(facetFacing_, cosIn);
+  if (!(cosFacet > 0) || !(faces > 0)) return 0;
+  // The first facing facet among kMaxFacetRedraws draws: density D·1{facing}/P_f, drawn at all
+  // with probability 1 − (1 − P_f)^R (else the macro normal, which the split does not use).
+  const double drawn = 1 - std::pow(1 - faces, skin::kMaxFacetRedraws);
+  return facetDensityPerSr(aspectRatio_, cosFacet) /
+         (4 * std::fabs(glm::dot(outgoing, halfVector))) * drawn / faces;
+}
+
+double SkinMaterial::surfaceFresnel(std::size_t channel, double cosFacet) const {
+  return skin::fresnelReflectance(cosFacet, 1.0, surfaceIndex_.at(channel));
 }
 
 double SkinMaterial::surfaceLobeDensity(const glm::dvec3& incident, const glm::dvec3& normal,

@@ -17,7 +17,11 @@
 // the band's exit tables are sampled at once instead (skin/exit_table_bundle.h: the entry crossed
 // by the band's spectral walk, one exit offset for every channel, each channel weighted by its
 // table's P(subsurface) and density ratio). Everything else of this comment holds per channel
-// with that weight.
+// with that weight. At a camera path's first skin hit the entry is split (WalkOptions::
+// splitEntryReflection): a first facet whose mirror image of the ray leaves is scored at once as a
+// surface branch of weight F_λ(h) along that mirror direction; the branch's law has a closed form
+// (surfaceBranchDensity), so every light — area and environment too — gets next-event estimation
+// with the lobe F_λ(h)·p(ω), combined with the branch's continuation by the power heuristic.
 //
 // ESTIMATOR. Reciprocity lets the walk start on the camera side: the camera ray, direction ω_c,
 // hits skin at x. Local frame (skin::Frame): z = −n (into the skin, n the shading normal facing the
@@ -136,6 +140,18 @@ class SkinMaterial {
   /// N(cosθ) of the header comment (probability that a single facet reflection faces the ray
   /// and leaves the surface), interpolated from the table.
   double surfaceLobeNormalisation(double cosIncident) const;
+  /// The split entry's surface branch (SkinScatter::surfaceBranch): the density (per sr) with which
+  /// the walk's first facet, the first of kMaxFacetRedraws draws from P_s that faces the ray,
+  /// mirrors a ray travelling along `incident` into `outgoing`: D(h)/(4|ω·h|) · (1 − (1 −
+  /// P_f)^R)/P_f, h the half vector, P_f(θ_c) the probability that a drawn facet faces the ray
+  /// (tabulated like N); 0 for directions that do not leave. The branch's weight is F_λ(h) times
+  /// the arriving throughput, so F_λ(h) times this density is its exact lobe: next-event
+  /// estimation with it is combined with the branch's continuation by MIS (integrator.cpp).
+  double surfaceBranchDensity(const glm::dvec3& incident, const glm::dvec3& normal,
+                              const glm::dvec3& outgoing) const;
+  /// F of the air–stratum corneum interface at `channel` for a facet at cosine cosFacet to the
+  /// ray (the walk's Fresnel reflectance of that facet).
+  double surfaceFresnel(std::size_t channel, double cosFacet) const;
 
   const SkinWalkCache& walks() const { return *walks_; }
   /// The exit tables in table mode, else null.
@@ -163,6 +179,8 @@ class SkinMaterial {
   /// tables sampled at once (skin/exit_table_bundle.h).
   std::vector<skin::ExitTableBundle> tableBundles_;
   std::vector<double> lobeNormalisation_;  ///< N at cosθ = i / (size − 1)
+  std::vector<double> facetFacing_;        ///< P_f at cosθ = i / (size − 1)
+  std::vector<double> surfaceIndex_;       ///< per channel: the stratum corneum's index
 };
 
 /// The specimen of a skin material: loaded by name or path (specimenDir for names), overrides

@@ -1,8 +1,11 @@
 // The skin material's parts: the melanin-level cache with stochastic rounding, freckles, the
-// melanin texture, the surface-lobe model g, and the projection of walk exits onto the surface.
+// melanin texture, the surface-lobe model g, the split entry's surface-branch density, and the
+// projection of walk exits onto the surface.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "renderer/scene/data_paths.h"
 #include "renderer/scene/texture_map.h"
@@ -11,6 +14,8 @@
 #include "renderer/tracing/skin_walk_cache.h"
 #include "skin/core/constants.h"
 #include "skin/core/random.h"
+#include "skin/sampling/surface_normal_sampling.h"
+#include "tests/support/chi2.h"
 #include "tests/support/test_spectra.h"
 
 using hylios::kPi;
@@ -166,4 +171,98 @@ TEST(SkinMaterial, SubsurfaceExitsLandOnTheSurface) {
   meanDistance /= subsurface;
   EXPECT_GT(meanDistance, 0.005);  // at 1100 nm light travels millimetres in the dermis
   EXPECT_LT(meanDistance, 0.5);
+}
+
+// The split entry's surface branch (the walk's first facing facet mirrors the ray out) against its
+// density SkinMaterial::surfaceBranchDensity, which the integrator's next-event estimation and MIS
+// use: branch directions binned by their half vector h (equal-probability cells of the facet law
+// in θ_h × 6 cells of φ_h over [0, π], folded by the y → −y symmetry, plus "no branch") by
+// chi-square, the expected count of a cell N·∫ p(ω(h))·4|ω·h| dΩ_h (midpoint rule); and each
+// channel's mean surface weight against ∫ F_λ(h)·p dω within 4 standard errors.
+TEST(SkinMaterial, SurfaceBranchDensityIsTheSplitEntrysLaw) {
+  SceneDesc scene;
+  ShapeDesc sphere;
+  sphere.kind = ShapeDesc::Kind::Sphere;
+  sphere.material = "skin";
+  scene.shapes = {sphere};
+  const EmbreeScene geometry(scene);
+  const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
+  const std::vector<double> channels{450, 550, 650};
+  const SkinMaterial material(skinDesc(), specimen, 0, 1.0, channels, spectra(),
+                              skin::SkinMode::Walk, 0.0, {{0, 1, 2}});
+  SurfaceHit hit;
+  hit.position = {0, 0, 1};
+  hit.geometricNormal = hit.shadingNormal = {0, 0, 1};
+  const glm::dvec3 normal(0, 0, 1);
+  const double s = specimen.surfaceFoldAspectRatio;
+  constexpr int kThetaCells = 8, kPhiCells = 6, kPaths = 60000;
+  std::vector<double> thetaEdges{0};
+  for (int k = 1; k < kThetaCells; ++k)
+    thetaEdges.push_back(skin::sampleSurfaceNormalPolar(s, static_cast<double>(k) / kThetaCells));
+  thetaEdges.push_back(kPi / 2);
+  for (const double incidenceDeg : {0.0, 45.0, 75.0}) {
+    const double a = incidenceDeg * kPi / 180;
+    const glm::dvec3 incident(std::sin(a), 0, -std::cos(a));
+    auto cellOf = [&](const glm::dvec3& h) {
+      const double theta = std::acos(std::clamp(h.z, -1.0, 1.0));
+      const double phi = std::fabs(std::atan2(h.y, h.x));
+      int t = 0;
+      while (t + 1 < kThetaCells && theta >= thetaEdges[static_cast<std::size_t>(t) + 1]) ++t;
+      return t * kPhiCells + std::min(kPhiCells - 1, static_cast<int>(phi / kPi * kPhiCells));
+    };
+    std::vector<double> observed(kThetaCells * kPhiCells + 1, 0.0), weight(channels.size(), 0.0),
+        weightSquares(channels.size(), 0.0);
+    std::vector<double> weights(channels.size()), surface(channels.size());
+    for (int i = 0; i < kPaths; ++i) {
+      skin::Rng rng(5, static_cast<std::uint64_t>(incidenceDeg), static_cast<std::uint64_t>(i));
+      std::fill(surface.begin(), surface.end(), 0.0);
+      const SkinScatter out = material.scatterSpectral(hit, incident, 0, geometry, {0}, rng,
+                                                       weights.data(), surface.data());
+      if (!out.surfaceBranch) {
+        observed.back() += 1;
+        continue;
+      }
+      observed[static_cast<std::size_t>(cellOf(glm::normalize(out.surfaceDirection - incident)))] +=
+          1;
+      for (std::size_t c = 0; c < channels.size(); ++c) {
+        weight[c] += surface[c];
+        weightSquares[c] += surface[c] * surface[c];
+      }
+    }
+    // Expected cell probabilities and Fresnel-weighted integrals over the half-vector sphere.
+    std::vector<double> expected(observed.size(), 0.0), fresnelIntegral(channels.size(), 0.0);
+    constexpr int kSub = 24;
+    double branch = 0;
+    for (int t = 0; t < kThetaCells; ++t)
+      for (int p = 0; p < kPhiCells; ++p)
+        for (int i = 0; i < kSub; ++i)
+          for (int j = 0; j < kSub; ++j) {
+            const double lo = thetaEdges[static_cast<std::size_t>(t)];
+            const double dTheta = (thetaEdges[static_cast<std::size_t>(t) + 1] - lo) / kSub;
+            const double theta = lo + (i + 0.5) * dTheta;
+            const double dPhi = kPi / kPhiCells / kSub;
+            const double phi = p * kPi / kPhiCells + (j + 0.5) * dPhi;
+            const glm::dvec3 h(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                               std::cos(theta));
+            const double cosFacet = -glm::dot(incident, h);
+            if (!(cosFacet > 0)) continue;
+            const glm::dvec3 out = incident + h * (2 * cosFacet);
+            // Both φ signs (the fold): twice the measure of this half.
+            const double measure = 2 * material.surfaceBranchDensity(incident, normal, out) * 4 *
+                                   cosFacet * std::sin(theta) * dTheta * dPhi;
+            expected[static_cast<std::size_t>(t * kPhiCells + p)] += measure * kPaths;
+            branch += measure;
+            for (std::size_t c = 0; c < channels.size(); ++c)
+              fresnelIntegral[c] += measure * material.surfaceFresnel(c, cosFacet);
+          }
+    expected.back() = kPaths * (1 - branch);
+    EXPECT_TRUE(test::chi2Accepts(test::chi2FromCounts(observed, expected), 1e-3))
+        << incidenceDeg << "°";
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+      const double mean = weight[c] / kPaths;
+      const double sigma = std::sqrt((weightSquares[c] / kPaths - mean * mean) / (kPaths - 1));
+      EXPECT_NEAR(mean, fresnelIntegral[c], 4 * sigma + 1e-6)
+          << incidenceDeg << "°, " << channels[c] << " nm";
+    }
+  }
 }
