@@ -46,7 +46,8 @@ ExitTableBundle::ExitTableBundle(const SpectralWalk& entryWalk,
 }
 
 void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
-                             bool splitEntryReflection) const {
+                             bool splitEntryReflection,
+                             const std::array<double, 2>* stratified) const {
   thread_local SpectralEntry entry;
   if (!entryWalk_.enter(incident, rng, path, entry, splitEntryReflection)) return;
   const std::size_t n = tables_.size();
@@ -66,11 +67,13 @@ void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
     return;
   }
   const std::size_t m = exiting.size();
+  const double uHero = stratified ? (*stratified)[0] : rng.uniform();
+  const double uCell = stratified ? (*stratified)[1] : rng.uniform();
   const std::size_t hero =
-      exiting[std::min(m - 1, static_cast<std::size_t>(rng.uniform() * static_cast<double>(m)))];
+      exiting[std::min(m - 1, static_cast<std::size_t>(uHero * static_cast<double>(m)))];
   const ExitTable& heroTable = *tables_[hero];
   const std::size_t A = static_cast<std::size_t>(heroTable.settings_.offsetAzimuthBins);
-  const std::size_t cell = pickCumulative(heroTable.bins_[bin].offsetCdf, rng.uniform());
+  const std::size_t cell = pickCumulative(heroTable.bins_[bin].offsetCdf, uCell);
   const int radial = static_cast<int>(cell / A);
   const double r = heroTable.radiusInCell(k, radial, rng.uniform());
   double phi = (static_cast<double>(cell % A) + rng.uniform()) / static_cast<double>(A) * kPi;

@@ -16,16 +16,17 @@
 //      except the overflow cell, uniform up to each table's own largest radius), the offset azimuth
 //      and its sign uniform within c. The exit is always subsurface.
 // Wavelength λ's exit weight is the product of the two stages' ratios,
-//   w_λ = [p_λ(e) / ((1/N) Σ_j q_j(e))] · [S_λ(k) π_λ(c) u_λ(r | c) / ((1/M) Σ_h π_h(c) u_h(r |
-//   c))],
+//   w_λ = [p_λ(e) / ((1/N) Σ_j q_j(e))] · [S_λ(k) π_λ(c) u_λ(r|c) / ((1/M) Σ_h π_h(c) u_h(r|c))],
 // S_λ(k) the subsurface exits' share of the bin's outcome weights in λ's table (its P(subsurface
-// exit), absorption included, as ExitTable::sample draws it). The stages are drawn independently, so E[w_λ] = E_λ[S_λ(k)], λ's own table's
-// subsurface reflectance, with exit offsets distributed as λ's table: exact in expectation for
-// every λ against ExitTable::sample, and the second ratio is at most M · S_λ(k). Transmitted and
-// event-limited outcomes, which a render scores 0, are not drawn. The exit direction is not drawn
-// either (exitDirection is the outward normal): its law would add a ratio to every weight, and the
-// renderer gives subsurface exits a lobe of its own (renderer/tracing/skin_material.h).
+// exit), absorption included, as ExitTable::sample draws it). The stages are drawn independently,
+// so E[w_λ] = E_λ[S_λ(k)], λ's own table's subsurface reflectance, with exit offsets distributed as
+// λ's table: exact in expectation for every λ against ExitTable::sample, and the second ratio is at
+// most M · S_λ(k). Transmitted and event-limited outcomes, which a render scores 0, are not drawn.
+// The exit direction is not drawn either (exitDirection is the outward normal): its law would add a
+// ratio to every weight, and the renderer gives subsurface exits a lobe of its own
+// (renderer/tracing/skin_material.h).
 #pragma once
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -50,7 +51,11 @@ class ExitTableBundle {
   /// every λ in exitWeight; Absorbed (every weight 0) when no table of the bundle has a subsurface
   /// exit in the bin. With `splitEntryReflection` the entry split of
   /// WalkOptions::splitEntryReflection (SpectralPath::surfaceWeight). Absorption fields stay 0.
-  void sample(const Vec3& incident, Rng& rng, SpectralPath& path, bool splitEntryReflection) const;
+  /// `stratified` (may be null): two uniform numbers in [0, 1) for the second hero and its offset
+  /// cell, e.g. a pixel's stratified or low-discrepancy sample (renderer/tracing/pixel_sampler.h),
+  /// instead of two from `rng`; any uniform pair keeps the weights exact in expectation.
+  void sample(const Vec3& incident, Rng& rng, SpectralPath& path, bool splitEntryReflection,
+              const std::array<double, 2>* stratified = nullptr) const;
 
  private:
   const SpectralWalk& entryWalk_;

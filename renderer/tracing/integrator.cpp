@@ -277,8 +277,14 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       const bool split = splitFirstSkinHit && spectrum.spectral;
       splitFirstSkinHit = false;
       std::vector<double> surface(split ? n : 0, 0.0), before(split ? beta : beta + n, beta + n);
-      const SkinScatter s = scatterSkin(*material.skin, *hit, ray.direction, spectrum,
-                                        samples.rng(), beta, split ? surface.data() : nullptr);
+      // There, in table mode, the exit's draw (its table and offset cell) takes the pixel's
+      // stratified pair: the channels' weights vary most with which table the exit came from.
+      std::array<double, 2> exitSample{};
+      const bool stratifyExit = split && material.skin->tables();
+      if (stratifyExit) exitSample = samples.get2D();
+      const SkinScatter s =
+          scatterSkin(*material.skin, *hit, ray.direction, spectrum, samples.rng(), beta,
+                      split ? surface.data() : nullptr, stratifyExit ? &exitSample : nullptr);
       if (s.surfaceBranch) {
         for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
         SampleStream branch = samples.branch();
@@ -383,13 +389,15 @@ void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& 
 
 SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
                                     const glm::dvec3& direction, const PathSpectrum& spectrum,
-                                    skin::Rng& rng, double* beta, double* surfaceWeights) const {
+                                    skin::Rng& rng, double* beta, double* surfaceWeights,
+                                    const std::array<double, 2>* exitSample) const {
   if (!spectrum.spectral)
     return skin.scatter(hit, direction, spectrum[0], *geometry_, materialOfShape_, rng);
   thread_local std::vector<double> weights;
   weights.resize(spectrum.size());
-  const SkinScatter s = skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_,
-                                             materialOfShape_, rng, weights.data(), surfaceWeights);
+  const SkinScatter s =
+      skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_, materialOfShape_, rng,
+                           weights.data(), surfaceWeights, exitSample);
   for (std::size_t i = 0; i < spectrum.size(); ++i) beta[i] *= weights[i];
   return s;
 }

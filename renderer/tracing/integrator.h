@@ -183,7 +183,8 @@ class Integrator {
   /// (spectral). surfaceWeights (spectral only, may be null): the entry split's surface weights.
   SkinScatter scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
                           const glm::dvec3& direction, const PathSpectrum& spectrum, skin::Rng& rng,
-                          double* beta, double* surfaceWeights = nullptr) const;
+                          double* beta, double* surfaceWeights = nullptr,
+                          const std::array<double, 2>* exitSample = nullptr) const;
   /// The rest of a path from `ray` (its vertex count so far `firstDepth`) with throughput
   /// `throughput`, adding into L; splitFirstSkinHit: the first skin hit splits its entry;
   /// firstPdf > 0: the density (sr⁻¹) with which `ray`'s direction was sampled, for MIS with

@@ -199,8 +199,8 @@ SkinScatter SkinMaterial::scatter(const SurfaceHit& hit, const glm::dvec3& direc
 SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction,
                                           std::size_t bundle, const EmbreeScene& geometry,
                                           const std::vector<std::size_t>& materialOfShape,
-                                          skin::Rng& rng, double* weights,
-                                          double* surfaceWeights) const {
+                                          skin::Rng& rng, double* weights, double* surfaceWeights,
+                                          const std::array<double, 2>* exitSample) const {
   if (tables_ && tableBundles_.empty())
     throw std::logic_error("SkinMaterial::scatterSpectral: the tables were built per wavelength");
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
@@ -212,7 +212,7 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   const bool split = surfaceWeights != nullptr;
   if (tables_)
     tableBundles_[static_cast<std::size_t>(level) * walks_->bundles() + bundle].sample(
-        incident, rng, path, split);
+        incident, rng, path, split, exitSample);
   else
     walk.trace(incident, rng, path, split);
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];

@@ -128,10 +128,13 @@ class SkinMaterial {
   /// With `surfaceWeights` (not null) the entry split is on: a surface reflection that a single
   /// facet sends out is scored into surfaceWeights[i] and the walk goes on into the skin
   /// (SkinScatter::surfaceBranch; skin/skin_walk.h, WalkOptions::splitEntryReflection).
+  /// `exitSample` (table mode; may be null): a stratified uniform pair for the exit's draw
+  /// (skin/exit_table_bundle.h), used in place of two numbers from `rng`.
   SkinScatter scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction,
                               std::size_t bundle, const EmbreeScene& geometry,
                               const std::vector<std::size_t>& materialOfShape, skin::Rng& rng,
-                              double* weights, double* surfaceWeights = nullptr) const;
+                              double* weights, double* surfaceWeights = nullptr,
+                              const std::array<double, 2>* exitSample = nullptr) const;
 
   /// The model lobe g (per sr) of a surface reflection into `outgoing` for a ray travelling along
   /// `incident` onto a surface with outward normal `normal` (all unit, world).
