@@ -25,12 +25,17 @@ double facetDensityPerSr(double s, double cosTheta) {
   return skin::surfaceNormalPolarDensity(s, t) / (2 * kPi * std::sin(t));
 }
 
-/// N(cosθ_i): probability that a facet drawn from P_s faces the ray and mirrors it out of the
-/// surface. Local frame: the ray travels along +z into the surface, the macro normal is −z.
-double facetReflectionLeaves(double s, double cosIncident) {
+/// Over facets drawn from P_s for a ray at cosθ_i (stratified quadrature): the probability that a
+/// facet faces the ray (P_f, the walk's redraw test) and that it faces the ray and mirrors it out
+/// of the surface (N). Local frame: the ray travels along +z into the surface, the macro normal
+/// is −z.
+struct FacetFractions {
+  double facing = 0, leaving = 0;
+};
+FacetFractions facetFractions(double s, double cosIncident) {
   const double sinIncident = std::sqrt(std::max(0.0, 1 - cosIncident * cosIncident));
   const skin::Vec3 d{sinIncident, 0, cosIncident};
-  int leaving = 0;
+  int facing = 0, leaving = 0;
   for (int i = 0; i < kLobeTableStrata; ++i)
     for (int j = 0; j < kLobeTableStrata; ++j) {
       const double theta = skin::sampleSurfaceNormalPolar(s, (i + 0.5) / kLobeTableStrata);
@@ -39,26 +44,12 @@ double facetReflectionLeaves(double s, double cosIncident) {
                          -std::cos(theta)};
       const double dm = skin::dot(d, m);
       if (!(dm < 0)) continue;
+      ++facing;
       const skin::Vec3 out = d - m * (2 * dm);
       if (out.z < 0) ++leaving;
     }
-  return static_cast<double>(leaving) / (kLobeTableStrata * kLobeTableStrata);
-}
-
-/// P_f(cosθ_i): probability that a facet drawn from P_s faces the ray (the walk's redraw test).
-double facetFaces(double s, double cosIncident) {
-  const double sinIncident = std::sqrt(std::max(0.0, 1 - cosIncident * cosIncident));
-  const skin::Vec3 d{sinIncident, 0, cosIncident};
-  int facing = 0;
-  for (int i = 0; i < kLobeTableStrata; ++i)
-    for (int j = 0; j < kLobeTableStrata; ++j) {
-      const double theta = skin::sampleSurfaceNormalPolar(s, (i + 0.5) / kLobeTableStrata);
-      const double phi = 2 * kPi * (j + 0.5) / kLobeTableStrata;
-      const skin::Vec3 m{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                         -std::cos(theta)};
-      if (skin::dot(d, m) < 0) ++facing;
-    }
-  return static_cast<double>(facing) / (kLobeTableStrata * kLobeTableStrata);
+  const double n = kLobeTableStrata * kLobeTableStrata;
+  return {facing / n, leaving / n};
 }
 
 /// Linear interpolation in a table over cosθ = i / (size − 1).
@@ -128,8 +119,9 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
       }
   for (int i = 0; i < kLobeTableSize; ++i) {
     const double cosine = static_cast<double>(i) / (kLobeTableSize - 1);
-    lobeNormalisation_.push_back(facetReflectionLeaves(aspectRatio_, cosine));
-    facetFacing_.push_back(facetFaces(aspectRatio_, cosine));
+    const FacetFractions f = facetFractions(aspectRatio_, cosine);
+    lobeNormalisation_.push_back(f.leaving);
+    facetFacing_.push_back(f.facing);
   }
   for (std::size_t c = 0; c < walks_->channels(); ++c)
     surfaceIndex_.push_back(

@@ -34,6 +34,16 @@ MaterialDesc skinDesc() {
 
 using hylios::test::spectra;
 
+/// A scene of one skin sphere, radius 1 cm at the origin.
+SceneDesc unitSkinSphere() {
+  SceneDesc scene;
+  ShapeDesc sphere;
+  sphere.kind = ShapeDesc::Kind::Sphere;
+  sphere.material = "skin";
+  scene.shapes = {sphere};
+  return scene;
+}
+
 }  // namespace
 
 TEST(SkinWalkCache, StochasticRoundingIsUnbiasedInTheMultiplier) {
@@ -144,12 +154,7 @@ TEST(SkinMaterial, SubsurfaceExitsLandOnTheSurface) {
   // A skin sphere (radius 1 cm) at 1100 nm, where exits lie ~5 mm from the entry on average: every
   // subsurface exit is projected back onto the sphere. Exits farther than ~1.4 radii (the probes'
   // reach on a sphere; about 3 % of them here) fall back to the entry point and are counted.
-  SceneDesc scene;
-  ShapeDesc sphere;
-  sphere.kind = ShapeDesc::Kind::Sphere;
-  sphere.material = "skin";
-  scene.shapes = {sphere};
-  const EmbreeScene geometry(scene);
+  const EmbreeScene geometry(unitSkinSphere());
   const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
   const SkinMaterial material(skinDesc(), specimen, 0, 1.0, {1100}, spectra());
   const auto hit = geometry.intersect({{0, 0, 5}, {0, 0, -1}});
@@ -180,12 +185,7 @@ TEST(SkinMaterial, SubsurfaceExitsLandOnTheSurface) {
 // chi-square, the expected count of a cell N·∫ p(ω(h))·4|ω·h| dΩ_h (midpoint rule); and each
 // channel's mean surface weight against ∫ F_λ(h)·p dω within 4 standard errors.
 TEST(SkinMaterial, SurfaceBranchDensityIsTheSplitEntrysLaw) {
-  SceneDesc scene;
-  ShapeDesc sphere;
-  sphere.kind = ShapeDesc::Kind::Sphere;
-  sphere.material = "skin";
-  scene.shapes = {sphere};
-  const EmbreeScene geometry(scene);
+  const EmbreeScene geometry(unitSkinSphere());
   const skin::Specimen specimen = skin::loadSpecimen("S1", specimenDir());
   const std::vector<double> channels{450, 550, 650};
   const SkinMaterial material(skinDesc(), specimen, 0, 1.0, channels, spectra(),

@@ -6,13 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <ostream>
 #include <string>
 
 #include "skin/spectral_database.h"
 #include "skin/spectral_table.h"
+#include "tests/support/test_spectra.h"
 
 namespace hylios::skin {
 namespace {
@@ -20,17 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 const double kLn10 = std::log(10.0);
 
-fs::path spectraDir() {
-  const char* env = std::getenv("HYLIOS_DATA_DIR");
-  return fs::path(env != nullptr && *env != '\0' ? env : HYLIOS_SOURCE_DIR) / "assets" / "spectra";
-}
+/// The tables the database is loaded from (tests/support/test_spectra.h: the source tree's).
+fs::path spectraDir() { return fs::path(HYLIOS_SOURCE_DIR) / "assets" / "spectra"; }
 
-const SpectralDatabase& database() {
-  static const SpectralDatabase db = SpectralDatabase::load(spectraDir());
-  return db;
-}
-
-double mu(Absorber a, double nm) { return database().specificAbsorption(a, nm); }
+double mu(Absorber a, double nm) { return test::spectra().specificAbsorption(a, nm); }
 
 /// Decadic molar extinction [cm⁻¹ M⁻¹] of a PhotochemCAD table at one of its rows.
 double molarExtinction(const std::string& file, double nm) {
@@ -116,8 +109,8 @@ TEST(UvAbsorberTables, DnaIsTheBaseCompositionSumScaledToA260) {
 
 TEST(UvAbsorberTables, LayerDispersionReadsHaleAndQuerry) {
   // Hale & Querry rows 250 nm: n = 1.362; 1200 and 1400 nm: 1.324 and 1.321 ⇒ 1.3225 at 1300 nm.
-  EXPECT_DOUBLE_EQ(database().waterRefractiveIndex(250.0), 1.362);
-  EXPECT_NEAR(database().waterRefractiveIndex(1300.0), 1.3225, 1e-12);
+  EXPECT_DOUBLE_EQ(test::spectra().waterRefractiveIndex(250.0), 1.362);
+  EXPECT_NEAR(test::spectra().waterRefractiveIndex(1300.0), 1.3225, 1e-12);
   // Water's absorption still comes from Segelstein's k (spectral_database_test, 1450 nm).
 }
 
