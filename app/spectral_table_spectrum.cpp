@@ -31,8 +31,7 @@ std::vector<skin::SkinTally> spectralTableTallies(const std::vector<skin::SkinOp
   tbb::parallel_for(std::size_t{0}, bundles.size(), [&](std::size_t b) {
     std::vector<const skin::SkinWalk*> members;
     for (std::size_t i : bundles[b]) members.push_back(&walks[i]);
-    const auto built =
-        ExitTableCache::shared().getBundle(members, SkinTableCache::renderSettings());
+    const auto built = ExitTableCache::shared().getBundle(members, SkinTableCache::curveSettings());
     for (std::size_t j = 0; j < bundles[b].size(); ++j) tables[bundles[b][j]] = built[j];
   });
   std::vector<skin::SkinTally> tallies(optics.size());

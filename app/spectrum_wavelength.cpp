@@ -8,7 +8,7 @@ namespace hylios {
 
 skin::SkinTally exitTableTally(const skin::SkinWalk& walk, double incidenceDeg, std::uint64_t rays,
                                std::uint64_t seed) {
-  const auto table = ExitTableCache::shared().get(walk, SkinTableCache::renderSettings());
+  const auto table = ExitTableCache::shared().get(walk, SkinTableCache::curveSettings());
   return sampleTableTally(*table, incidenceDeg, rays, seed);
 }
 

@@ -15,6 +15,13 @@ skin::ExitTableSettings SkinTableCache::renderSettings() {
   return settings;
 }
 
+skin::ExitTableSettings SkinTableCache::curveSettings() {
+  skin::ExitTableSettings settings;
+  settings.cosineBins = 12;
+  settings.raysPerBin = 40000;
+  return settings;
+}
+
 SkinTableCache::SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,
                                const skin::ExitTableSettings& settings, bool spectralBuild)
     : channels_(walks.channels()) {

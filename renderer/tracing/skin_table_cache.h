@@ -30,6 +30,9 @@ class SkinTableCache {
   /// over a render's bins, is a fixed bias far below its per-pixel noise; docs/interpretations.md,
   /// "Render tables").
   static skin::ExitTableSettings renderSettings();
+  /// The settings of a reflectance curve's tables (`spectrum --skin-model table`, Python): K = 12,
+  /// N = 40 000 rays per bin, since a curve has no per-pixel noise to hide a table's error in.
+  static skin::ExitTableSettings curveSettings();
 
   SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,
                  const skin::ExitTableSettings& settings, bool spectralBuild = false);
