@@ -26,9 +26,4 @@ inline std::size_t pickCumulative(const std::vector<double>& cdf, double u) {
   return i;
 }
 
-/// The probability that pickCumulative draws index i.
-inline double cumulativeProbability(const std::vector<double>& cdf, std::size_t i) {
-  return (cdf[i] - (i > 0 ? cdf[i - 1] : 0.0)) / cdf.back();
-}
-
 }  // namespace hylios::skin
