@@ -16,8 +16,8 @@ using namespace hylios;
 
 namespace {
 
-/// Per-pixel values of channel `channel` after rendering `scene` in `mode` with `seed`; with
-/// `channels` every channel's values, channel-major.
+/// Per-pixel values of channel 0 after rendering `scene` in `mode` with `seed`; with `channels`
+/// also every channel's, one vector per channel.
 std::vector<double> render(SceneDesc scene, skin::SkinMode mode, std::uint64_t seed,
                            std::vector<std::vector<double>>* channels = nullptr) {
   scene.integrator.skinMode = mode;
