@@ -43,6 +43,13 @@ ExitTableBundle::ExitTableBundle(const SpectralWalk& entryWalk,
     if (!sameLayout(t->settings(), tables_.front()->settings()))
       throw std::invalid_argument("exit table bundle: the tables' bins differ");
   }
+  exitingByBin_.resize(static_cast<std::size_t>(tables_.front()->bins()));
+  for (std::size_t k = 0; k < exitingByBin_.size(); ++k)
+    for (std::size_t i = 0; i < tables_.size(); ++i) {
+      const ExitTable::Bin& b = tables_[i]->bins_[k];
+      if (b.subsurface > 0 && !b.offsetCdf.empty() && b.offsetCdf.back() > 0)
+        exitingByBin_[k].push_back(i);
+    }
 }
 
 void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
@@ -52,15 +59,10 @@ void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
   if (!entryWalk_.enter(incident, rng, path, entry, splitEntryReflection)) return;
   const std::size_t n = tables_.size();
   thread_local std::vector<double> ratio, density;
-  thread_local std::vector<std::size_t> exiting;
   entryRatios(entry, ratio);
   const int k = tables_.front()->chooseBin(entry.direction.z, rng.uniform());
   const auto bin = static_cast<std::size_t>(k);
-  exiting.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const ExitTable::Bin& b = tables_[i]->bins_[bin];
-    if (b.subsurface > 0 && !b.offsetCdf.empty() && b.offsetCdf.back() > 0) exiting.push_back(i);
-  }
+  const std::vector<std::size_t>& exiting = exitingByBin_[bin];
   path.exitWeight.assign(n, 0.0);
   if (exiting.empty()) {
     path.end = PathEnd::Absorbed;

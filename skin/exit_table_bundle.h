@@ -60,6 +60,7 @@ class ExitTableBundle {
  private:
   const SpectralWalk& entryWalk_;
   std::vector<const ExitTable*> tables_;
+  std::vector<std::vector<std::size_t>> exitingByBin_;  ///< per bin: the members with exits there
 };
 
 }  // namespace hylios::skin

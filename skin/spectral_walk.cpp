@@ -197,32 +197,33 @@ std::size_t SpectralWalk::drawHero(Rng& rng) const {
                   static_cast<std::size_t>(rng.uniform() * static_cast<double>(wavelengthCount_)));
 }
 
+void SpectralWalk::startPath(State& s, const Vec3& direction, Rng& rng) const {
+  s.path.events = 1;
+  s.path.exitOffsetXCm = s.path.exitOffsetYCm = 0;
+  s.hero = drawHero(rng);
+  s.direction = direction;
+}
+
+bool SpectralWalk::enterFromAir(State& s, Rng& rng, bool splitEntryReflection) const {
+  if (crossSurface(s, false, rng, splitEntryReflection)) return true;
+  s.path.end = PathEnd::SurfaceReflection;
+  s.path.exitDirection = s.direction;
+  s.misRatios(s.path.exitWeight);
+  return false;
+}
+
 void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
                          bool splitEntryReflection) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);
-  path.events = 1;
-  path.exitOffsetXCm = path.exitOffsetYCm = 0;
-  s.hero = drawHero(rng);
-  s.direction = incidentDirection;
-  if (crossSurface(s, false, rng, splitEntryReflection)) return traceEntered(s, rng);
-  path.end = PathEnd::SurfaceReflection;
-  path.exitDirection = s.direction;
-  s.misRatios(path.exitWeight);
+  startPath(s, incidentDirection, rng);
+  if (enterFromAir(s, rng, splitEntryReflection)) traceEntered(s, rng);
 }
 
 bool SpectralWalk::enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
                          SpectralEntry& entry, bool splitEntryReflection) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);
-  path.events = 1;
-  path.exitOffsetXCm = path.exitOffsetYCm = 0;
-  s.hero = drawHero(rng);
-  s.direction = incidentDirection;
-  if (!crossSurface(s, false, rng, splitEntryReflection)) {
-    path.end = PathEnd::SurfaceReflection;
-    path.exitDirection = s.direction;
-    s.misRatios(path.exitWeight);
-    return false;
-  }
+  startPath(s, incidentDirection, rng);
+  if (!enterFromAir(s, rng, splitEntryReflection)) return false;
   entry.direction = s.direction;
   entry.hero = s.hero;
   entry.logTarget = s.logDensity;
@@ -235,10 +236,7 @@ bool SpectralWalk::enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
 void SpectralWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng,
                                 SpectralPath& path) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);
-  path.events = 1;
-  path.exitOffsetXCm = path.exitOffsetYCm = 0;
-  s.hero = drawHero(rng);
-  s.direction = transmittedDirection;
+  startPath(s, transmittedDirection, rng);
   traceEntered(s, rng);
 }
 

@@ -155,6 +155,10 @@ class SpectralWalk {
   class State;
 
   void traceEntered(State& s, Rng& rng) const;
+  /// A new path along `direction`: one event (its surface crossing), no offset, the hero drawn.
+  void startPath(State& s, const Vec3& direction, Rng& rng) const;
+  /// The crossing from air; false when the surface reflected the path, which is then scored.
+  bool enterFromAir(State& s, Rng& rng, bool splitEntryReflection) const;
   /// The hero: uniform over the bundle.
   std::size_t drawHero(Rng& rng) const;
   /// The rough (or smooth) surface crossing of Sec. 4.3 from air (fromInside false) or from the

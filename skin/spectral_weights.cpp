@@ -32,6 +32,14 @@ inline double fresnelReflectance(double cosThetaIncident, double n1, double n2, 
   return same ? 0.0 : (total ? 1.0 : reflectance);
 }
 
+/// The air–skin reflectance at index ni: (n1, n2) = (ni, 1) from inside, (1, ni) from the air,
+/// chosen by arithmetic (inside = 1 or 0, outside = 1 − inside; exact: 0 or 1 factors), since a
+/// select on the flag stops a loop vectorising.
+inline double surfaceReflectance(double cosI, double ni, double inside, double outside) {
+  double cosT;
+  return fresnelReflectance(cosI, inside * ni + outside, outside * ni + inside, cosT);
+}
+
 template <bool kForced>
 __attribute__((always_inline)) inline void refractionDensities(std::size_t n, const Vec3& d,
                                                                const Vec3& t, const Vec3& macro,
@@ -152,27 +160,16 @@ void exponentialsOfSum(std::size_t n, const double* x, const double* y, double o
 HYLIOS_VECTOR_CLONES
 void reflectances(std::size_t n, double cosI, const double* index, bool fromInside,
                   double* __restrict out) {
-  // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
   const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double ni = index[i];
-    const double n1 = inside * ni + outside, n2 = outside * ni + inside;  // exact: 0 or 1 factors
-    double cosT;
-    out[i] = fresnelReflectance(cosI, n1, n2, cosT);
-  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = surfaceReflectance(cosI, index[i], inside, outside);
 }
 
 HYLIOS_VECTOR_CLONES
 void addLogReflectances(std::size_t n, double cosI, const double* index, bool fromInside,
                         double* __restrict logDensity) {
-  // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
   const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double ni = index[i];
-    const double n1 = inside * ni + outside, n2 = outside * ni + inside;  // exact: 0 or 1 factors
-    double cosT;
-    logDensity[i] += vectorLog(fresnelReflectance(cosI, n1, n2, cosT));
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    logDensity[i] += vectorLog(surfaceReflectance(cosI, index[i], inside, outside));
 }
 
 HYLIOS_VECTOR_CLONES

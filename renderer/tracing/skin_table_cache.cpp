@@ -16,8 +16,7 @@ skin::ExitTableSettings SkinTableCache::renderSettings() {
 }
 
 skin::ExitTableSettings SkinTableCache::curveSettings() {
-  skin::ExitTableSettings settings;
-  settings.cosineBins = 12;
+  skin::ExitTableSettings settings = renderSettings();
   settings.raysPerBin = 40000;
   return settings;
 }
