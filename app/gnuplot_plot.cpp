@@ -38,15 +38,24 @@ struct ScratchFolder {
   }
 };
 
+bool hasBand(const PlotSeries& series) { return !series.yError.empty() || !series.bandLow.empty(); }
+
+/// Columns x, y and, with a band, its lower and upper edges.
 void writeSeriesData(const std::filesystem::path& file, const PlotSeries& series) {
-  if (series.x.size() != series.y.size() ||
-      (!series.yError.empty() && series.yError.size() != series.y.size()))
-    throw std::invalid_argument("plot series '" + series.title + "' has columns of unequal length");
+  const std::size_t n = series.y.size();
+  const bool symmetric = !series.yError.empty(), edges = !series.bandLow.empty();
+  if (series.x.size() != n || (symmetric && series.yError.size() != n) ||
+      (edges && (series.bandLow.size() != n || series.bandHigh.size() != n)) ||
+      (!edges && !series.bandHigh.empty()) || (symmetric && edges))
+    throw std::invalid_argument("plot series '" + series.title +
+                                "' has columns of unequal length or two bands");
   std::ofstream out(file);
   out.precision(10);
-  for (std::size_t i = 0; i < series.x.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     out << series.x[i] << ' ' << series.y[i];
-    if (!series.yError.empty()) out << ' ' << series.yError[i];
+    if (symmetric)
+      out << ' ' << series.y[i] - series.yError[i] << ' ' << series.y[i] + series.yError[i];
+    if (edges) out << ' ' << series.bandLow[i] << ' ' << series.bandHigh[i];
     out << '\n';
   }
 }
@@ -68,8 +77,8 @@ std::string panelCommands(const PlotPanel& panel, const std::filesystem::path& f
     const std::string file = quoted(data.string());
     if (!first) script << ", \\\n  ";
     first = false;
-    if (!series.yError.empty())
-      script << file << " using 1:($2-$3):($2+$3) with filledcurves fs transparent solid 0.25 "
+    if (hasBand(series))
+      script << file << " using 1:3:4 with filledcurves fs transparent solid 0.25 "
              << "lc " << (s + 1) << " notitle, \\\n  ";
     const std::string style = series.style.empty() ? "lines lw 2" : series.style;
     script << file << " using 1:2 with " << style;

@@ -13,6 +13,9 @@ struct PlotSeries {
   std::vector<double> y;
   std::vector<double> yError;  ///< optional: drawn as a shaded band y ± yError when non-empty
   std::string style;           ///< optional gnuplot style, e.g. "lines lw 2 dt 2"
+  /// Optional: a shaded band from bandLow to bandHigh (e.g. a measured population's range); both
+  /// or neither, not with yError.
+  std::vector<double> bandLow{}, bandHigh{};
 };
 
 struct PlotPanel {

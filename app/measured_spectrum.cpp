@@ -80,14 +80,16 @@ MeasuredSpectrum loadMeasuredSpectrum(const std::string& fileAndColumn) {
   return parseMeasuredSpectrum(in, fileAndColumn.substr(colon + 1), file);
 }
 
-MeasuredSpectrum parseMeasuredSpectrum(std::istream& in, const std::string& columnName,
-                                       const std::string& file) {
+namespace {
+
+/// The columns `columns` (indices into the header) of CSV text, checked row by row.
+std::vector<MeasuredSpectrum> parseColumns(std::istream& in, const std::vector<std::string>& header,
+                                           const std::vector<std::size_t>& columns,
+                                           const std::string& file) {
+  std::vector<MeasuredSpectrum> spectra(columns.size());
+  for (std::size_t k = 0; k < columns.size(); ++k) spectra[k].label = header[columns[k]];
+  std::vector<double> wavelengths;
   std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(file + ":1: empty file");
-  const auto header = splitCsvLine(line);
-  const std::size_t column = findColumn(header, columnName, file + ":1");
-  MeasuredSpectrum spectrum;
-  spectrum.label = header[column];
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (line.empty() || line == "\r") continue;
     const std::string where = file + ":" + std::to_string(lineNumber);
@@ -96,14 +98,44 @@ MeasuredSpectrum parseMeasuredSpectrum(std::istream& in, const std::string& colu
       throw std::runtime_error(where + ": " + std::to_string(fields.size()) +
                                " fields, header has " + std::to_string(header.size()));
     const double w = parseValue(fields[0], where);
-    if (!spectrum.wavelengthNm.empty() && w <= spectrum.wavelengthNm.back())
+    if (!wavelengths.empty() && w <= wavelengths.back())
       throw std::runtime_error(where + ": wavelengths must ascend");
-    spectrum.wavelengthNm.push_back(w);
-    spectrum.value.push_back(parseValue(fields[column], where));
+    wavelengths.push_back(w);
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      spectra[k].value.push_back(parseValue(fields[columns[k]], where));
   }
-  if (spectrum.wavelengthNm.size() < 2)
-    throw std::runtime_error(file + ": fewer than two data rows");
-  return spectrum;
+  if (wavelengths.size() < 2) throw std::runtime_error(file + ": fewer than two data rows");
+  for (auto& s : spectra) s.wavelengthNm = wavelengths;
+  return spectra;
+}
+
+std::vector<std::string> readHeader(std::istream& in, const std::string& file) {
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(file + ":1: empty file");
+  return splitCsvLine(line);
+}
+
+}  // namespace
+
+MeasuredSpectrum parseMeasuredSpectrum(std::istream& in, const std::string& columnName,
+                                       const std::string& file) {
+  const auto header = readHeader(in, file);
+  const std::size_t column = findColumn(header, columnName, file + ":1");
+  return parseColumns(in, header, {column}, file).front();
+}
+
+std::vector<MeasuredSpectrum> parseMeasuredSpectra(std::istream& in, const std::string& file) {
+  const auto header = readHeader(in, file);
+  if (header.size() < 2) throw std::runtime_error(file + ":1: no data column after the wavelength");
+  std::vector<std::size_t> columns;
+  for (std::size_t i = 1; i < header.size(); ++i) columns.push_back(i);
+  return parseColumns(in, header, columns, file);
+}
+
+std::vector<MeasuredSpectrum> loadMeasuredSpectra(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot open measured spectra");
+  return parseMeasuredSpectra(in, file.string());
 }
 
 double rmsDifference(const std::vector<double>& wavelengthNm, const std::vector<double>& model,

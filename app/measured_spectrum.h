@@ -1,6 +1,7 @@
 // A measured reflectance curve to compare a modelled spectrum with: one column of a CSV file whose
 // first column is wavelength in nm (e.g. the NCSU skin database, Vrhel et al. 1994).
 #pragma once
+#include <filesystem>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -23,6 +24,13 @@ MeasuredSpectrum loadMeasuredSpectrum(const std::string& fileAndColumn);
 /// `sourceName` stands for the file in messages.
 MeasuredSpectrum parseMeasuredSpectrum(std::istream& csv, const std::string& column,
                                        const std::string& sourceName);
+
+/// Every data column of a CSV file (same format and errors as loadMeasuredSpectrum), in file order:
+/// a set of curves on one wavelength grid, such as a measured population.
+std::vector<MeasuredSpectrum> loadMeasuredSpectra(const std::filesystem::path& file);
+/// Parses CSV text as loadMeasuredSpectra does; `sourceName` stands for the file in messages.
+std::vector<MeasuredSpectrum> parseMeasuredSpectra(std::istream& csv,
+                                                   const std::string& sourceName);
 
 /// Root-mean-square of model − measured over the model wavelengths the measurement covers.
 /// Returns the number of wavelengths compared through `compared`.

@@ -1,4 +1,4 @@
-// hylios validate: every comparison the project has data for (paper Figs. 7, 8, 10, 11), written
+// hylios validate: every comparison the project has data for (paper Figs. 7–11), written
 // as DIR/validation.md with PNG plots (app/validation_report.h). docs/validation.md is its output.
 #include <iostream>
 #include <memory>
@@ -23,8 +23,8 @@ struct ValidateArguments {
 void registerValidateCommand(CLI::App& app) {
   auto args = std::make_shared<ValidateArguments>();
   CLI::App* command = app.add_subcommand("validate",
-                                         "Run every comparison with measured skin (Figs. 7, 8, 10, "
-                                         "11); writes DIR/validation.md and PNG plots");
+                                         "Run every comparison with measured skin (Figs. 7-11); "
+                                         "writes DIR/validation.md and PNG plots");
   command->add_option("--out", args->out, "Folder for validation.md and its plots")
       ->capture_default_str();
   addRaysOption(*command, args->rays,

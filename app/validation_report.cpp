@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <numeric>
 #include <sstream>
 
 #include "app/gnuplot_plot.h"
 #include "app/measured_spectrum.h"
+#include "app/population_comparison.h"
 #include "renderer/scene/data_paths.h"
 #include "skin/core/atomic_file.h"
 #include "skin/core/constants.h"
@@ -111,6 +113,23 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 }  // namespace
 
+std::vector<skin::Estimate> modelReflectanceCurve(const skin::Specimen& specimen,
+                                                  const std::vector<double>& wavelengths,
+                                                  double incidenceDeg, std::uint64_t rays,
+                                                  std::uint64_t seed,
+                                                  const skin::SpectralDatabase& spectra) {
+  std::vector<skin::SkinOptics> optics;
+  for (double w : wavelengths) optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
+  skin::SpectralRunOptions run;
+  run.incidenceDeg = incidenceDeg;
+  run.rays = rays;
+  run.seed = seed;
+  run.walk.layerAbsorption = false;
+  std::vector<skin::Estimate> curve;
+  for (const auto& t : skin::simulateSkinSpectral(optics, run)) curve.push_back(t.reflectance());
+  return curve;
+}
+
 CurveComparison compareWithMeasured(const std::string& specimenName,
                                     const std::filesystem::path& ncsuFile,
                                     const std::string& column,
@@ -124,21 +143,14 @@ CurveComparison compareWithMeasured(const std::string& specimenName,
   c.measuredLabel = measured.label;
   c.measuredColumn = column;
   c.incidenceDeg = incidenceDeg;
-  std::vector<skin::SkinOptics> optics;
   for (double w : wavelengths)
     if (measured.covers(w)) {
       c.wavelengthNm.push_back(w);
       c.measured.push_back(measured.at(w));
-      optics.push_back(skin::computeSkinOptics(specimen, spectra, w));
     }
-  if (optics.empty())
+  if (c.wavelengthNm.empty())
     throw std::runtime_error("measured curve " + column + " covers none of the wavelengths");
-  skin::SpectralRunOptions run;
-  run.incidenceDeg = incidenceDeg;
-  run.rays = rays;
-  run.seed = seed;
-  run.walk.layerAbsorption = false;
-  for (const auto& t : skin::simulateSkinSpectral(optics, run)) c.model.push_back(t.reflectance());
+  c.model = modelReflectanceCurve(specimen, c.wavelengthNm, incidenceDeg, rays, seed, spectra);
   double sum2 = 0, sumE = 0, noise2 = 0;
   for (std::size_t i = 0; i < c.model.size(); ++i) {
     const double e = c.model[i].mean - c.measured[i];
@@ -195,6 +207,30 @@ std::string runValidation(const ValidationOptions& options) {
     plotPanels(images / "fig7_ncsu.png", "Paper Fig. 7: HyLIoS vs NCSU skin (Vrhel et al. 1994)",
                panels, 2, 1400, 600);
   }
+
+  // ---- Fig. 9: S3 and S4 against the NIST population, 250–2500 nm ----
+  t0 = std::chrono::steady_clock::now();
+  const SkinPopulation nist = loadSkinPopulation(dataRoot() / "tests" / "data" / "validation" /
+                                                 "nist_cooksey2017_skin.csv");
+  const std::vector<double> wholeRange = grid(250, 2500, 10);
+  std::vector<std::size_t> everyone(nist.subjects.size());
+  std::iota(everyone.begin(), everyone.end(), std::size_t{0});
+  std::vector<PopulationComparison> population;
+  for (const auto& [name, lightest] : {std::pair{"S3", true}, std::pair{"S4", false}}) {
+    const skin::Specimen specimen = skin::loadSpecimen(name, specimenDir());
+    const auto model = modelReflectanceCurve(specimen, wholeRange, 8, rays, seed, spectra);
+    population.push_back(compareWithPopulation(
+        specimen.name, wholeRange, model, 8, nist, nist.quantileGroup(0.25, lightest),
+        lightest ? "NIST lightest quarter" : "NIST darkest quarter"));
+    population.push_back(compareWithPopulation(specimen.name, wholeRange, model, 8, nist, everyone,
+                                               "all NIST subjects"));
+  }
+  std::cout << "validate: Fig. 9 (NIST population) " << fmt("%.1f", seconds(t0)) << " s\n";
+  if (options.plots)
+    plotPopulationComparisons(images / "fig9_nist.png",
+                              "Paper Fig. 9: HyLIoS S3 and S4 vs the NIST skin reflectance set "
+                              "(Cooksey et al. 2017), 8° incidence",
+                              {population[0], population[2]});
 
   // ---- Fig. 8: S2 epidermis at 302 nm ----
   t0 = std::chrono::steady_clock::now();
@@ -387,6 +423,20 @@ std::string runValidation(const ValidationOptions& options) {
      << " rays per wavelength. The project's goal is RMS ≤ 0.03 for each. `hylios fit` fits "
         "specimen quantities to "
         "these curves (README).\n\n![Fig. 7](validation/fig7_ncsu.png)\n\n";
+  md << "## A measured population, UV to IR (Fig. 9)\n\n"
+     << "The NIST reference set (Cooksey, Allen & Tsai 2017: 100 subjects, 250–2500 nm, "
+        "directional-hemispherical reflectance factor) ranked by mean reflectance over 500–700 nm. "
+        "The paper's Fig. 9 compares S3 with a lightly pigmented specimen of Cooksey & Allen 2013 "
+        "at 8° and S4 with a darkly pigmented one of Jacquez et al. 1955 at 16.75°; the project "
+        "holds neither, so S3 is set against the set's lightest quarter and S4 against its darkest "
+        "quarter (the darkest the set holds: mean 500–700 nm reflectance "
+     << fmt("%.2f", nist.lightness(nist.byLightness().back())) << " to "
+     << fmt("%.2f", nist.lightness(nist.quantileGroup(0.25, false).back())) << "), both at 8°. "
+     << "Each region's cell: the wavelengths where the model lies inside the group's measured "
+        "range "
+        "(within 2σ of the model), and the largest excess beyond it (model − nearest edge) and "
+        "where.\n\n"
+     << populationTable(population) << "\n![Fig. 9](validation/fig9_nist.png)\n\n";
   md << "## S2 fitted to NCSU object 113, next to Table 1\n\n"
      << "`hylios fit` (bounded Levenberg–Marquardt, common random numbers; bounds and sources in "
         "docs/interpretations.md) with 5 free quantities, "

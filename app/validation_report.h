@@ -4,6 +4,7 @@
 // | id     | what                                                                 | data                           |
 // |--------|----------------------------------------------------------------------|--------------------------------|
 // | fig7   | S1 vs NCSU object 117 and S2 vs object 113, 45°, 400–700 nm (Fig. 7) | tests/data/validation (Vrhel 1994) |
+// | fig9   | S3 at 8° vs the lightest quarter of the NIST set, S4 vs its darkest quarter, 250–2500 nm | tests/data/validation (Cooksey 2017) |
 // | fig8   | S2 epidermis, 302 nm, normal incidence, transmitted profile (Fig. 8) | none in the project: the paper's claim (forward scattering) is checked |
 // | fig10  | S1 visible BRDF in the plane of incidence at 0° and 60° (Fig. 10)    | none in the project: shape checks |
 // | fig11  | S1 at 45°, 365 nm vs 1100 nm, surface/subsurface/total (Fig. 11)     | none in the project: the paper's claim (IR more diffuse) is checked |
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "skin/core/statistics.h"
+#include "skin/specimen.h"
 #include "skin/spectral_database.h"
 
 namespace hylios {
@@ -32,6 +34,14 @@ struct CurveComparison {
   double noiseRms = 0;   ///< sqrt(mean σ²): the RMS's own Monte Carlo uncertainty bound
 };
 
+/// The spectral walk's reflectance curve (exact melanosomes, no per-layer absorption tally) of
+/// `specimen` at `incidenceDeg`, `rays` per wavelength: the model side of every comparison.
+std::vector<skin::Estimate> modelReflectanceCurve(const skin::Specimen& specimen,
+                                                  const std::vector<double>& wavelengths,
+                                                  double incidenceDeg, std::uint64_t rays,
+                                                  std::uint64_t seed,
+                                                  const skin::SpectralDatabase& spectra);
+
 /// S1/obj117 or S2/obj113 style comparison over `wavelengths` at `incidenceDeg` with the spectral
 /// walk (exact melanosomes) and `rays` per wavelength; `ncsuFile` is the NCSU CSV.
 CurveComparison compareWithMeasured(const std::string& specimen,
@@ -49,8 +59,8 @@ struct ValidationOptions {
 };
 
 /// Runs every comparison and writes outDir/validation.md and its PNGs under outDir/validation/
-/// (fig7_ncsu.png, fig8_forward_profile.png, fig10_brdf.png, fig11_uv_ir.png). `--out docs` gives
-/// the committed docs/validation.md. Returns the Markdown text.
+/// (fig7_ncsu.png, fig9_nist.png, fig8_forward_profile.png, fig10_brdf.png, fig11_uv_ir.png).
+/// `--out docs` gives the committed docs/validation.md. Returns the Markdown text.
 std::string runValidation(const ValidationOptions& options);
 
 }  // namespace hylios

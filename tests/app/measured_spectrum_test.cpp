@@ -64,3 +64,23 @@ TEST(MeasuredSpectrum, ParsesFromAStreamWithTheGivenName) {
         << e.what();
   }
 }
+
+TEST(MeasuredSpectrum, LoadsEveryColumnOnOneGrid) {
+  std::istringstream csv("wavelength_nm,a,b\n400,0.1,0.5\n410,0.3,0.7\n");
+  const auto all = hylios::parseMeasuredSpectra(csv, "inline.csv");
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].label, "a");
+  EXPECT_EQ(all[1].label, "b");
+  EXPECT_EQ(all[1].wavelengthNm, (std::vector<double>{400, 410}));
+  EXPECT_NEAR(all[1].at(405.0), 0.6, 1e-15);
+  std::istringstream ragged("wavelength_nm,a,b\n400,0.1,0.5\n410,0.3\n");
+  try {
+    hylios::parseMeasuredSpectra(ragged, "inline.csv");
+    FAIL() << "a short row accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("inline.csv:3: 2 fields, header has 3"), std::string::npos)
+        << e.what();
+  }
+  std::istringstream onlyWavelengths("wavelength_nm\n400\n410\n");
+  EXPECT_THROW(hylios::parseMeasuredSpectra(onlyWavelengths, "inline.csv"), std::runtime_error);
+}

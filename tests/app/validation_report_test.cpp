@@ -1,6 +1,6 @@
-// `hylios validate` (app/validation_report.h): the NCSU figures of Fig. 7 reproduce those of the
-// committed docs/validation.md within their statistical tolerance, and the command writes the
-// report with its table and plots.
+// `hylios validate` (app/validation_report.h): the NCSU figures of Fig. 7 and the NIST UV figure of
+// Fig. 9 reproduce those of the committed docs/validation.md within their statistical tolerance,
+// and the command writes the report with its table and plots.
 //
 // Tolerance: for two model curves m1, m2 against the same data d, |RMS(m1 − d) − RMS(m2 − d)| ≤
 // RMS(m1 − m2) (triangle inequality), whose expectation is ≤ sqrt(noise1² + noise2²) with noise
@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/population_comparison.h"
 #include "app/validation_report.h"
 #include "tests/support/scratch_csv.h"
 #include "tests/support/test_spectra.h"
@@ -52,6 +53,27 @@ TEST(ValidationReport, NcsuFiguresMatchTheCommittedReport) {
   }
 }
 
+// docs/validation.md, Fig. 9: S3 at 8° against the lightest quarter of the NIST set, the excess of
+// the model over the group's highest measured reflectance at 300 nm (the largest of 250–310 nm),
+// with the model's σ there at 10^5 rays.
+constexpr double kS3ExcessAt300Nm = 0.0386, kS3SigmaAt300Nm = 0.00038;
+
+TEST(ValidationReport, NistUvFigureMatchesTheCommittedReport) {
+  const SkinPopulation nist = loadSkinPopulation(kNcsu.parent_path() / "nist_cooksey2017_skin.csv");
+  const skin::Specimen s3 = skin::loadSpecimen("S3", test::specimenDir());
+  const std::vector<skin::Estimate> model =
+      modelReflectanceCurve(s3, {300}, 8, 40000, 7, test::spectra());
+  const PopulationComparison c =
+      compareWithPopulation("S3", {300}, model, 8, nist, nist.quantileGroup(0.25, true), "light");
+  const double excess = c.regions.back().worstExcess;
+  std::cout << "S3 at 300 nm: " << model[0].mean << " ± " << model[0].standardError
+            << ", excess over the lightest quarter " << excess << " (docs " << kS3ExcessAt300Nm
+            << ")\n";
+  // 4σ of the difference of two independent estimates, plus the report's rounding (5e-5).
+  EXPECT_NEAR(excess, kS3ExcessAt300Nm,
+              4 * std::hypot(model[0].standardError, kS3SigmaAt300Nm) + 5e-5);
+}
+
 TEST(ValidationReport, CommandWritesTheReportAndItsPlots) {
   test::ScratchFolder scratch("validate");
   test::runCommandLine(registerValidateCommand,
@@ -62,10 +84,12 @@ TEST(ValidationReport, CommandWritesTheReportAndItsPlots) {
   const std::string md = text.str();
   EXPECT_NE(md.find("| S1 vs NCSU obj117, 45° (Fig. 7) |"), std::string::npos);
   EXPECT_NE(md.find("| S2 vs NCSU obj113, 45° (Fig. 7) |"), std::string::npos);
+  EXPECT_NE(md.find("| S3 vs NIST lightest quarter, 8° |"), std::string::npos);
+  EXPECT_NE(md.find("| S4 vs NIST darkest quarter, 8° |"), std::string::npos);
   EXPECT_NE(md.find("| 8 | half width"), std::string::npos);
   EXPECT_NE(md.find("| 11 | subsurface share"), std::string::npos);
-  for (const char* png :
-       {"fig7_ncsu.png", "fig8_forward_profile.png", "fig10_brdf.png", "fig11_uv_ir.png"}) {
+  for (const char* png : {"fig7_ncsu.png", "fig9_nist.png", "fig8_forward_profile.png",
+                          "fig10_brdf.png", "fig11_uv_ir.png"}) {
     EXPECT_GT(std::filesystem::file_size(scratch.path / "validation" / png), 1000u) << png;
     EXPECT_NE(md.find(std::string("](validation/") + png + ")"), std::string::npos) << png;
   }
