@@ -56,6 +56,7 @@ void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
                              bool splitEntryReflection,
                              const std::array<double, 2>* stratified) const {
   thread_local SpectralEntry entry;
+  path.exitEntryWeight.clear();
   if (!entryWalk_.enter(incident, rng, path, entry, splitEntryReflection)) return;
   const std::size_t n = tables_.size();
   thread_local std::vector<double> ratio, density;
@@ -97,12 +98,14 @@ void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
     mixture += d;
   }
   mixture /= static_cast<double>(m);
+  path.exitEntryWeight.assign(n, 0.0);
   for (std::size_t i : exiting) {
     const ExitTable::Bin& b = tables_[i]->bins_[bin];
     // P(subsurface exit) as the table's own sampling has it: the outcome's share of the bin's
     // total outcome weight (ExitTable::sampleBin).
     const double subsurfaceShare = b.subsurface / b.outcomeCdf.back();
-    path.exitWeight[i] = ratio[i] * subsurfaceShare * density[i] / mixture;
+    path.exitEntryWeight[i] = ratio[i] * subsurfaceShare;
+    path.exitWeight[i] = path.exitEntryWeight[i] * density[i] / mixture;
   }
   path.end = PathEnd::SubsurfaceReflection;
   path.exitOffsetXCm = r * std::cos(phi);

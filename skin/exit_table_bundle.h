@@ -48,12 +48,14 @@ class ExitTableBundle {
 
   /// One ray arriving from air along `incident` (z > 0). `path` gets end SurfaceReflection (the
   /// walk's weights) or SubsurfaceReflection with the shared exit offset and the weight w_λ of
-  /// every λ in exitWeight; Absorbed (every weight 0) when no table of the bundle has a subsurface
-  /// exit in the bin. With `splitEntryReflection` the entry split of
-  /// WalkOptions::splitEntryReflection (SpectralPath::surfaceWeight). Absorption fields stay 0.
-  /// `stratified` (may be null): two uniform numbers in [0, 1) for the second hero and its offset
-  /// cell, e.g. a pixel's stratified or low-discrepancy sample (renderer/tracing/pixel_sampler.h),
-  /// instead of two from `rng`; any uniform pair keeps the weights exact in expectation.
+  /// every λ in exitWeight, and in exitEntryWeight the first stage's part (entry ratio × S_λ):
+  /// exitWeight − exitEntryWeight has expectation 0 given the entry; Absorbed (every weight 0)
+  /// when no table of the bundle has a subsurface exit in the bin. With `splitEntryReflection` the
+  /// entry split of WalkOptions::splitEntryReflection (SpectralPath::surfaceWeight). Absorption
+  /// fields stay 0. `stratified` (may be null): two uniform numbers in [0, 1) for the second hero
+  /// and its offset cell, e.g. a pixel's stratified or low-discrepancy sample
+  /// (renderer/tracing/pixel_sampler.h), instead of two from `rng`; any uniform pair keeps the
+  /// weights exact in expectation.
   void sample(const Vec3& incident, Rng& rng, SpectralPath& path, bool splitEntryReflection,
               const std::array<double, 2>* stratified = nullptr) const;
 

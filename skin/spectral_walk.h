@@ -56,6 +56,11 @@ struct SpectralPath {
   /// Per λ: the weight that leaves with the path (reflectance / transmittance score; for
   /// EventLimit the weight still carried when the walk was stopped).
   std::vector<double> exitWeight;
+  /// Per λ (ExitTableBundle's subsurface exits only; empty otherwise): exitWeight without the
+  /// second stage's mixture ratio π_λ(c)/mean_h π_h(c), i.e. the entry's ratio × the subsurface
+  /// share. Given the entry, exitWeight − exitEntryWeight has expectation 0: the renderer's
+  /// control variate for the exit point's light (renderer/tracing/integrator.h).
+  std::vector<double> exitEntryWeight;
   /// Per λ: transmitted directions through a smooth bottom (PathEnd::Transmitted only; depend on
   /// λ).
   std::vector<Vec3> transmittedDirection;

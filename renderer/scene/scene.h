@@ -151,6 +151,9 @@ struct IntegratorDesc {
   std::optional<double> noiseTarget;
   /// The camera paths' numbers (renderer/tracing/pixel_sampler.h).
   SamplerKind sampler = SamplerKind::Sobol;
+  /// Table mode, spectral estimator: the exit point's control variate for the band's colour
+  /// noise (renderer/tracing/integrator.h); false only to measure what it buys.
+  bool exitControlVariate = true;
   SourceLocation where;
 };
 

@@ -28,7 +28,7 @@ const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
       {"film.band", {"name", "wavelength_nm", "preview_range", "range_nm", "step_nm"}},
       {"integrator",
        {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target",
-        "sampler"}},
+        "sampler", "exit_control_variate"}},
       {"light",
        {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg", "shape",
         "camera_visible"}},
@@ -250,6 +250,7 @@ IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
     d.noiseTarget = r.number("noise_target", NumberRange::closed(1e-6, 10.0));
   if (r.has("sampler"))
     d.sampler = *findEnum(r.choice("sampler", enumNameList(kSamplerNames)), kSamplerNames);
+  d.exitControlVariate = r.boolean("exit_control_variate", d.exitControlVariate);
   r.finish("[integrator]");
   return d;
 }

@@ -160,17 +160,31 @@ Ray Integrator::spawn(const glm::dvec3& point, const glm::dvec3& sideNormal,
           tMax};
 }
 
+Integrator::LightNumbers Integrator::drawLightNumbers(SampleStream& samples) {
+  LightNumbers numbers{};
+  numbers.select = samples.get1D();
+  numbers.u0 = samples.get1D();
+  numbers.u12 = samples.get2D();
+  return numbers;
+}
+
 template <typename Lobe>
 std::optional<Integrator::DirectSample> Integrator::directLight(const glm::dvec3& point,
                                                                 const glm::dvec3& geometricNormal,
                                                                 SampleStream& samples,
                                                                 bool deltaOnly,
                                                                 const Lobe& lobe) const {
-  // Light 1-D, triangle 1-D, position on it 2-D (environment: direction from u0, u1).
-  const double uSelect = samples.get1D(), u0 = samples.get1D();
-  const std::array<double, 2> u12 = samples.get2D();
+  return directLight(point, geometricNormal, drawLightNumbers(samples), deltaOnly, lobe);
+}
+
+template <typename Lobe>
+std::optional<Integrator::DirectSample> Integrator::directLight(const glm::dvec3& point,
+                                                                const glm::dvec3& geometricNormal,
+                                                                const LightNumbers& numbers,
+                                                                bool deltaOnly,
+                                                                const Lobe& lobe) const {
   const std::optional<LightSample> light =
-      lights_->sampleGeometry(point, uSelect, u0, u12[0], u12[1]);
+      lights_->sampleGeometry(point, numbers.select, numbers.u0, numbers.u12[0], numbers.u12[1]);
   if (!light || (deltaOnly && !light->isDelta)) return std::nullopt;
   if (!(glm::dot(light->direction, geometricNormal) > 0)) return std::nullopt;
   const double f = lobe(light->direction);
@@ -238,6 +252,8 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
   double lastPdf = firstPdf;  // density (sr⁻¹) of the continued direction, for MIS at emitters
   glm::dvec3 lastPoint = ray.origin;
   auto anyThroughput = [&] { return std::any_of(beta, beta + n, [](double b) { return b > 0; }); };
+  std::vector<double> control;             // the exit's control variate throughput (header)
+  std::optional<FacingNormals> controlAt;  // set at a skin exit that has one: the entry's normals
   for (int depth = firstDepth;; ++depth) {
     const std::optional<SurfaceHit> hit = geometry_->intersect(ray);
     if (!hit) {
@@ -282,9 +298,13 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       std::array<double, 2> exitSample{};
       const bool stratifyExit = split && material.skin->tables();
       if (stratifyExit) exitSample = samples.get2D();
+      if (spectrum.spectral && material.skin->tables() && scene_.integrator.exitControlVariate)
+        control.resize(n);
       const SkinScatter s =
           scatterSkin(*material.skin, *hit, ray.direction, spectrum, samples.rng(), beta,
-                      split ? surface.data() : nullptr, stratifyExit ? &exitSample : nullptr);
+                      split ? surface.data() : nullptr, stratifyExit ? &exitSample : nullptr,
+                      control.empty() ? nullptr : control.data());
+      controlAt = s.entryWeights ? std::optional<FacingNormals>(facing) : std::nullopt;
       if (s.surfaceBranch) {
         for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
         SampleStream branch = samples.branch();
@@ -330,7 +350,17 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
     // A Lambertian lobe: the diffuse material's, or the skin's exit lobe (albedo 1: the walk
     // already weighted the light that left).
     const auto lobe = [&](const glm::dvec3& w) { return std::max(0.0, glm::dot(w, ns)) / kPi; };
-    addDirect(directLight(point, ng, samples, false, lobe), spectrum, beta, lobeAlbedo, L);
+    const LightNumbers numbers = drawLightNumbers(samples);
+    addDirect(directLight(point, ng, numbers, false, lobe), spectrum, beta, lobeAlbedo, L);
+    if (controlAt) {  // the exit point's control variate (header): the same light at the entry
+      const glm::dvec3 entryShading = controlAt->shading;
+      const auto entryLobe = [&](const glm::dvec3& w) {
+        return std::max(0.0, glm::dot(w, entryShading)) / kPi;
+      };
+      addDirect(directLight(hit->position, controlAt->geometric, numbers, false, entryLobe),
+                spectrum, control.data(), nullptr, L);
+      controlAt.reset();
+    }
     if (lobeAlbedo)
       for (std::size_t i = 0; i < n; ++i) beta[i] *= lobeAlbedo[i];
     if (!anyThroughput()) break;
@@ -390,15 +420,23 @@ void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& 
 SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
                                     const glm::dvec3& direction, const PathSpectrum& spectrum,
                                     skin::Rng& rng, double* beta, double* surfaceWeights,
-                                    const std::array<double, 2>* exitSample) const {
+                                    const std::array<double, 2>* exitSample,
+                                    double* controlBeta) const {
   if (!spectrum.spectral)
     return skin.scatter(hit, direction, spectrum[0], *geometry_, materialOfShape_, rng);
-  thread_local std::vector<double> weights;
+  thread_local std::vector<double> weights, entryWeights;
   weights.resize(spectrum.size());
-  const SkinScatter s =
-      skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_, materialOfShape_, rng,
-                           weights.data(), surfaceWeights, exitSample);
-  for (std::size_t i = 0; i < spectrum.size(); ++i) beta[i] *= weights[i];
+  entryWeights.resize(spectrum.size());
+  SkinScatter s = skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_,
+                                       materialOfShape_, rng, weights.data(), surfaceWeights,
+                                       exitSample, controlBeta ? entryWeights.data() : nullptr);
+  // One channel (or no second stage): w = A, nothing to control.
+  if (s.entryWeights)
+    s.entryWeights = !std::equal(weights.begin(), weights.end(), entryWeights.begin());
+  for (std::size_t i = 0; i < spectrum.size(); ++i) {
+    if (s.entryWeights) controlBeta[i] = beta[i] * (entryWeights[i] - weights[i]);
+    beta[i] *= weights[i];
+  }
   return s;
 }
 

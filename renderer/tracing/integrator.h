@@ -14,6 +14,13 @@
 //                in proportion; refraction scales radiance by (n_i/n_t)² (pbrt's radiance mode).
 //   skin       — the HyLIoS walk (renderer/tracing/skin_material.h, where the estimator is
 //   documented).
+// Exit point control variate (table mode, spectral): a band's exit weights are w_λ = A_λ·r_λ, A_λ
+// fixed by the entry and r_λ = π_λ(c)/mean_h π_h(c) the second stage's ratio for the exit cell c
+// (skin/exit_table_bundle.h), with E[r_λ | entry] = 1. The exit's next-event estimate N(x_c) is
+// scored as A_λ·N(x_0) + w_λ·(N(x_c) − N(x_0)): the subtracted (w_λ − A_λ)·N(x_0) has expectation 0
+// because N(x_0), the same light sample taken at the entry point x_0 with the exit lobe about the
+// entry's normal, does not depend on c. Where the light varies little between entry and exit,
+// r_λ's spread (the band's colour noise) leaves the direct light. One shadow ray more per skin hit.
 // max_depth counts scattering vertices (a skin walk is one): max_depth = 1 is direct lighting.
 // No Russian roulette: paths end at max_depth, by absorption, or by leaving the scene.
 //
@@ -170,21 +177,37 @@ class Integrator {
     LightSample light;
     double factor;  ///< lobe density × MIS weight / pdf
   };
+  /// The numbers of one next-event sample: the light (1-D), triangle or environment height (1-D),
+  /// point on the triangle or environment azimuth (2-D).
+  struct LightNumbers {
+    double select, u0;
+    std::array<double, 2> u12;
+  };
+  static LightNumbers drawLightNumbers(SampleStream& samples);
   /// Next-event estimate at `point` for a lobe density `lobe(ω)` (per sr, cos included);
   /// deltaOnly: only point/spot lights. nullopt when nothing arrives.
   template <typename Lobe>
   std::optional<DirectSample> directLight(const glm::dvec3& point,
                                           const glm::dvec3& geometricNormal, SampleStream& samples,
                                           bool deltaOnly, const Lobe& lobe) const;
+  /// The same with given numbers (the exit point's control variate reuses the exit's).
+  template <typename Lobe>
+  std::optional<DirectSample> directLight(const glm::dvec3& point,
+                                          const glm::dvec3& geometricNormal,
+                                          const LightNumbers& numbers, bool deltaOnly,
+                                          const Lobe& lobe) const;
   /// L[i] += beta[i] · albedo[i] (1 when null) · the direct sample at channel spectrum[i].
   void addDirect(const std::optional<DirectSample>& direct, const PathSpectrum& spectrum,
                  const double* beta, const double* albedo, double* L) const;
   /// The skin walk at a hit for the path's spectrum; multiplies beta by the exit weights
   /// (spectral). surfaceWeights (spectral only, may be null): the entry split's surface weights.
+  /// controlBeta (spectral, may be null): where the exit has a second stage
+  /// (SkinScatter::entryWeights), the control variate's throughput β_before · (A_λ − w_λ).
   SkinScatter scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
                           const glm::dvec3& direction, const PathSpectrum& spectrum, skin::Rng& rng,
                           double* beta, double* surfaceWeights = nullptr,
-                          const std::array<double, 2>* exitSample = nullptr) const;
+                          const std::array<double, 2>* exitSample = nullptr,
+                          double* controlBeta = nullptr) const;
   /// The rest of a path from `ray` (its vertex count so far `firstDepth`) with throughput
   /// `throughput`, adding into L; splitFirstSkinHit: the first skin hit splits its entry;
   /// firstPdf > 0: the density (sr⁻¹) with which `ray`'s direction was sampled, for MIS with

@@ -192,7 +192,8 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
                                           std::size_t bundle, const EmbreeScene& geometry,
                                           const std::vector<std::size_t>& materialOfShape,
                                           skin::Rng& rng, double* weights, double* surfaceWeights,
-                                          const std::array<double, 2>* exitSample) const {
+                                          const std::array<double, 2>* exitSample,
+                                          double* entryWeights) const {
   if (tables_ && tableBundles_.empty())
     throw std::logic_error("SkinMaterial::scatterSpectral: the tables were built per wavelength");
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
@@ -202,6 +203,7 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   const skin::SpectralWalk& walk = walks_->spectralWalk(bundle, level);
   thread_local skin::SpectralPath path;  // reused: the walk keeps its per-λ arrays there
   const bool split = surfaceWeights != nullptr;
+  path.exitEntryWeight.clear();
   if (tables_)
     tableBundles_[static_cast<std::size_t>(level) * walks_->bundles() + bundle].sample(
         incident, rng, path, split, exitSample);
@@ -210,6 +212,11 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
   SkinScatter out = exitOf(hit, direction, normals, frame, path.end, path.exitDirection,
                            path.exitOffsetXCm, path.exitOffsetYCm, geometry, materialOfShape);
+  if (entryWeights && out.kind == SkinScatter::Kind::SubsurfaceReflection &&
+      path.exitEntryWeight.size() == walk.size()) {
+    out.entryWeights = true;
+    for (std::size_t i = 0; i < walk.size(); ++i) entryWeights[i] = path.exitEntryWeight[i];
+  }
   if (surfaceWeights && !path.surfaceWeight.empty()) {
     out.surfaceBranch = true;
     out.surfaceDirection = glm::normalize(toGlm(frame.toWorld(path.surfaceDirection)));

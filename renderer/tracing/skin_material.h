@@ -93,6 +93,9 @@ struct SkinScatter {
   /// caller's array) along surfaceDirection from the entry point, besides the main outcome.
   bool surfaceBranch = false;
   glm::dvec3 surfaceDirection{0};
+  /// Table mode, spectral, subsurface exit: the exit weights' first-stage part was written to the
+  /// caller's entryWeights (skin::SpectralPath::exitEntryWeight).
+  bool entryWeights = false;
 };
 
 class SkinMaterial {
@@ -129,12 +132,15 @@ class SkinMaterial {
   /// facet sends out is scored into surfaceWeights[i] and the walk goes on into the skin
   /// (SkinScatter::surfaceBranch; skin/skin_walk.h, WalkOptions::splitEntryReflection).
   /// `exitSample` (table mode; may be null): a stratified uniform pair for the exit's draw
-  /// (skin/exit_table_bundle.h), used in place of two numbers from `rng`.
+  /// (skin/exit_table_bundle.h), used in place of two numbers from `rng`. `entryWeights` (may be
+  /// null): gets the exit weights without the second stage's ratio where there is one
+  /// (SkinScatter::entryWeights).
   SkinScatter scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction,
                               std::size_t bundle, const EmbreeScene& geometry,
                               const std::vector<std::size_t>& materialOfShape, skin::Rng& rng,
                               double* weights, double* surfaceWeights = nullptr,
-                              const std::array<double, 2>* exitSample = nullptr) const;
+                              const std::array<double, 2>* exitSample = nullptr,
+                              double* entryWeights = nullptr) const;
 
   /// The model lobe g (per sr) of a surface reflection into `outgoing` for a ray travelling along
   /// `incident` onto a surface with outward normal `normal` (all unit, world).

@@ -112,6 +112,7 @@ emission = { type = "constant", scale = 0.1 }
 max_depth = 12
 seed = 42
 skin_mode = "walk"
+exit_control_variate = false
 )";
 
 SceneDesc parse(const std::string& text) { return parseSceneText(text, "scene.toml", kSourceDir); }
@@ -237,6 +238,8 @@ TEST(SceneFile, FullSceneHasTheValuesItSays) {
 
   EXPECT_EQ(s.integrator.maxDepth, 12);
   EXPECT_EQ(s.integrator.seed, 42u);
+  EXPECT_FALSE(s.integrator.exitControlVariate);
+  EXPECT_TRUE(IntegratorDesc{}.exitControlVariate);  // the default
 }
 
 TEST(SceneFile, RotationsApplyAboutXThenYThenZ) {
@@ -317,6 +320,8 @@ TEST(SceneFile, WrongType) {
               "'position' must be an array of 3 numbers, got 2 element(s)");
   expectError("skin_mode = \"walk\"", "skin_mode = 3", "3",
               "'skin_mode' must be a string, got an integer");
+  expectError("exit_control_variate = false", "exit_control_variate = 1", "1",
+              "'exit_control_variate' must be a boolean, got an integer");
 }
 
 TEST(SceneFile, ArrayOfTablesWrittenAsTable) {

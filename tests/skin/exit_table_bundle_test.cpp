@@ -5,8 +5,6 @@
 // — in the visible (Rayleigh spread across the band) and the near IR (θo of Algorithm 2 differing
 // across it), at 0°, 45° and 80° incidence, with and without the entry split; weights are finite
 // and non-negative, and mismatched bundles are refused.
-#include "skin/exit_table_bundle.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +13,7 @@
 
 #include "skin/core/constants.h"
 #include "skin/core/statistics.h"
+#include "skin/exit_table_bundle.h"
 #include "skin/specimen.h"
 #include "tests/support/chi2.h"
 #include "tests/support/test_spectra.h"
@@ -170,6 +169,39 @@ TEST(ExitTableBundle, NearInfraredBandHasEachTablesExpectation) {
   const Bundle b({900, 1000, 1100, 1200, 1300}, tableSettings());
   expectSameExits(b, 0.0, false);
   expectSameExits(b, 45.0, true);
+}
+
+// The second stage's ratio has mean 1 given the entry: exitWeight − exitEntryWeight averages to 0,
+// also when multiplied by any function of the entry (here exitEntryWeight itself), which the
+// renderer's control variate needs (renderer/tracing/integrator.h). 4σ per wavelength.
+TEST(ExitTableBundle, SecondStageAddsNothingInExpectationGivenTheEntry) {
+  const Bundle b({400, 450, 500, 550, 600, 650, 700}, tableSettings());
+  const ExitTableBundle sampler = b.sampler();
+  for (double degrees : {0.0, 60.0}) {
+    std::vector<RunningStatistic> difference(sampler.size()), weighted(sampler.size());
+    Rng rng(11);
+    SpectralPath path;
+    std::size_t exits = 0;
+    for (int p = 0; p < 60000; ++p) {
+      sampler.sample(incidence(degrees), rng, path, true);
+      const bool subsurface = path.end == PathEnd::SubsurfaceReflection;
+      exits += subsurface;
+      ASSERT_EQ(path.exitEntryWeight.size(), subsurface ? sampler.size() : 0u);
+      for (std::size_t i = 0; i < sampler.size(); ++i) {
+        const double d = subsurface ? path.exitWeight[i] - path.exitEntryWeight[i] : 0.0;
+        difference[i].add(d);
+        weighted[i].add(subsurface ? d * path.exitEntryWeight[i] : 0.0);
+      }
+    }
+    ASSERT_GT(exits, 10000u);
+    for (std::size_t i = 0; i < sampler.size(); ++i) {
+      const std::string at =
+          std::to_string(b.optics[i].wavelengthNm) + " nm at " + std::to_string(degrees) + "°";
+      EXPECT_GT(difference[i].standardError(), 0) << at;
+      EXPECT_LT(std::fabs(difference[i].mean()), 4 * difference[i].standardError()) << at;
+      EXPECT_LT(std::fabs(weighted[i].mean()), 4 * weighted[i].standardError()) << at;
+    }
+  }
 }
 
 TEST(ExitTableBundle, RefusesMismatchedTables) {
