@@ -126,7 +126,8 @@ std::string bandText(const BandDesc& band) {
 }
 
 std::string overrideText(const std::string& key, double value) {
-  if (key == kWaterKey) return "water −" + number(value) + " %";
+  if (key == kWaterKey)  // the paper's Fig. 14: "No reduction", "20% reduction", …
+    return value == 0 ? "no water reduction" : "water −" + number(value) + " %";
   for (const OverrideName& n : kOverrideNames)
     if (key == n.key) return withUnit(n.label, value, n.unit);
   // Layer-qualified keys: "stratum_basale.thickness_cm" → "stratum basale thickness 0.002 cm".

@@ -59,7 +59,7 @@ TEST(FigureLayout, Figure13OrdersByMelaninNotByFileName) {
 TEST(FigureLayout, Figure14OrdersByDehydrationAndSharesTheMelanin) {
   expectLayout({{"figure14_water40.toml", "figure14_water0.toml", "figure14_water20.toml"},
                 {"figure14_water0", "figure14_water20", "figure14_water40"},
-                {"water −0 %", "water −20 %", "water −40 %"},
+                {"no water reduction", "water −20 %", "water −40 %"},
                 "1650 nm · specimen S1 · epidermal melanin 1.5 %"});
 }
 
@@ -140,6 +140,7 @@ TEST(FigureLayout, SeveralBandsPerSceneNameTheBandPerPanel) {
 TEST(FigureLayout, OverrideTexts) {
   EXPECT_EQ(overrideText("melanosome_percent", 7), "epidermal melanin 7 %");
   EXPECT_EQ(overrideText("water_reduction_percent", 20), "water −20 %");
+  EXPECT_EQ(overrideText("water_reduction_percent", 0), "no water reduction");
   EXPECT_EQ(overrideText("stratum_basale.thickness_cm", 0.002),
             "stratum basale thickness 0.002 cm");
   EXPECT_EQ(overrideText("surface_fold_aspect_ratio", 0.25), "surface fold aspect ratio 0.25");
