@@ -154,6 +154,9 @@ struct IntegratorDesc {
   /// Table mode, spectral estimator: the exit point's control variate for the band's colour
   /// noise (renderer/tracing/integrator.h); false only to measure what it buys.
   bool exitControlVariate = true;
+  /// Table mode: rays per cosine bin of every exit table (renderer/tracing/skin_table_cache.h);
+  /// a table's sampling error, a fixed bias of the render, falls as 1/√rays.
+  std::uint64_t tableRaysPerBin = 10000;
   SourceLocation where;
 };
 

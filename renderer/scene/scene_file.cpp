@@ -28,7 +28,7 @@ const std::map<std::string, std::vector<std::string>>& sceneFileKeys() {
       {"film.band", {"name", "wavelength_nm", "preview_range", "range_nm", "step_nm"}},
       {"integrator",
        {"max_depth", "seed", "skin_mode", "effect_tolerance", "estimator", "noise_target",
-        "sampler", "exit_control_variate"}},
+        "sampler", "exit_control_variate", "table_rays_per_bin"}},
       {"light",
        {"type", "emission", "position", "direction", "inner_angle_deg", "outer_angle_deg", "shape",
         "camera_visible"}},
@@ -251,6 +251,8 @@ IntegratorDesc readIntegrator(const toml::table* t, const TomlSource& src) {
   if (r.has("sampler"))
     d.sampler = *findEnum(r.choice("sampler", enumNameList(kSamplerNames)), kSamplerNames);
   d.exitControlVariate = r.boolean("exit_control_variate", d.exitControlVariate);
+  d.tableRaysPerBin = static_cast<std::uint64_t>(r.integer(
+      "table_rays_per_bin", 1000, 10000000, static_cast<std::int64_t>(d.tableRaysPerBin)));
   r.finish("[integrator]");
   return d;
 }

@@ -120,7 +120,8 @@ Integrator::Material Integrator::makeMaterial(
       const skin::Specimen specimen = loadMaterialSpecimen(desc, specimenDir());
       m.skin = std::make_unique<SkinMaterial>(
           desc, specimen, index, scene.unitCm, channelWavelengths, *spectra,
-          scene.integrator.skinMode, scene.integrator.effectTolerance, bundles);
+          scene.integrator.skinMode, scene.integrator.effectTolerance, bundles,
+          scene.integrator.tableRaysPerBin);
       break;
     }
   }

@@ -85,7 +85,8 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
                            const std::vector<double>& channelWavelengths,
                            const skin::SpectralDatabase& spectra, skin::SkinMode skinMode,
                            double effectTolerance,
-                           const std::vector<std::vector<std::size_t>>& bundles)
+                           const std::vector<std::vector<std::size_t>>& bundles,
+                           std::uint64_t tableRaysPerBin)
     : materialIndex_(materialIndex),
       unitCm_(unitCm),
       aspectRatio_(specimen.surfaceFoldAspectRatio),
@@ -109,7 +110,8 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
       spectralTables ? 0.0 : effectTolerance, bundles);
   if (tableMode)
     tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(),
-                                               SkinTableCache::renderSettings(), spectralTables);
+                                               SkinTableCache::renderSettings(tableRaysPerBin),
+                                               spectralTables);
   if (spectralTables)  // each band's tables sampled at once, the entry crossed by its walk
     for (int level = 0; level < walks_->levels(); ++level)
       for (std::size_t b = 0; b < bundles.size(); ++b) {

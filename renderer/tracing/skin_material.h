@@ -112,7 +112,8 @@ class SkinMaterial {
                const skin::SpectralDatabase& spectra,
                skin::SkinMode skinMode = skin::SkinMode::Walk,
                double effectTolerance = skin::kDefaultEffectTolerance,  ///< ε, skin/effect_plan.h
-               const std::vector<std::vector<std::size_t>>& bundles = {});
+               const std::vector<std::vector<std::size_t>>& bundles = {},
+               std::uint64_t tableRaysPerBin = SkinTableCache::kDefaultRenderRaysPerBin);
 
   /// Melanin multiplier at a hit: melanin map (by uv) × freckles (by position in cm).
   double melaninMultiplier(const SurfaceHit& hit) const;

@@ -8,10 +8,10 @@
 
 namespace hylios {
 
-skin::ExitTableSettings SkinTableCache::renderSettings() {
+skin::ExitTableSettings SkinTableCache::renderSettings(std::uint64_t raysPerBin) {
   skin::ExitTableSettings settings;
   settings.cosineBins = 12;
-  settings.raysPerBin = 10000;
+  settings.raysPerBin = raysPerBin;
   return settings;
 }
 

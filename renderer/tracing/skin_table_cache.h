@@ -13,6 +13,7 @@
 // band's tables at once (skin/exit_table_bundle.h, SkinMaterial).
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -29,7 +30,10 @@ class SkinTableCache {
   /// bin: a table's sampling error, 1–2 % of P(subsurface) per bin and a few tenths of a percent
   /// over a render's bins, is a fixed bias far below its per-pixel noise; docs/interpretations.md,
   /// "Render tables").
-  static skin::ExitTableSettings renderSettings();
+  /// `raysPerBin`: the scene's integrator.table_rays_per_bin (IntegratorDesc).
+  static skin::ExitTableSettings renderSettings(
+      std::uint64_t raysPerBin = kDefaultRenderRaysPerBin);
+  static constexpr std::uint64_t kDefaultRenderRaysPerBin = 10000;
   /// The settings of a reflectance curve's tables (`spectrum --skin-model table`, Python): K = 12,
   /// N = 40 000 rays per bin, since a curve has no per-pixel noise to hide a table's error in.
   static skin::ExitTableSettings curveSettings();

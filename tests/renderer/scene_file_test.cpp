@@ -113,6 +113,7 @@ max_depth = 12
 seed = 42
 skin_mode = "walk"
 exit_control_variate = false
+table_rays_per_bin = 40000
 )";
 
 SceneDesc parse(const std::string& text) { return parseSceneText(text, "scene.toml", kSourceDir); }
@@ -239,6 +240,7 @@ TEST(SceneFile, FullSceneHasTheValuesItSays) {
   EXPECT_EQ(s.integrator.maxDepth, 12);
   EXPECT_EQ(s.integrator.seed, 42u);
   EXPECT_FALSE(s.integrator.exitControlVariate);
+  EXPECT_EQ(s.integrator.tableRaysPerBin, 40000u);
   EXPECT_TRUE(IntegratorDesc{}.exitControlVariate);  // the default
 }
 
@@ -347,6 +349,8 @@ TEST(SceneFile, NegativeRadiusAndScale) {
 
 TEST(SceneFile, SamplesAndResolution) {
   expectError("spp = 32", "spp = 0", "0", "'spp' = 0 must be in [1, 1000000]");
+  expectError("table_rays_per_bin = 40000", "table_rays_per_bin = 10", "10",
+              "'table_rays_per_bin' = 10 must be in [1000, 10000000]");
   expectError("resolution = [320, 200]", "resolution = [320, 0]", "[320, 0]",
               "'resolution' = [320, 0]: each must be in [1, 16384]");
   expectError("resolution = [320, 200]", "resolution = [16384, 16384]", "[16384, 16384]",
