@@ -1,7 +1,10 @@
 #include "app/population_comparison.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -12,12 +15,6 @@ namespace {
 
 /// Region lower edges (nm); each region runs to the next edge.
 constexpr double kRegionEdgesNm[] = {250, 315, 400, 705, 1305};
-
-std::string fmt(const char* format, double v) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, v);
-  return buffer;
-}
 
 PopulationRegion regionOver(const PopulationComparison& c, double fromNm, double toNm) {
   PopulationRegion r;
@@ -56,6 +53,9 @@ PopulationComparison compareWithPopulation(const std::string& specimen,
     throw std::invalid_argument("population comparison: " + std::to_string(model.size()) +
                                 " model values for " + std::to_string(wavelengths.size()) +
                                 " wavelengths");
+  if (std::adjacent_find(wavelengths.begin(), wavelengths.end(), std::greater_equal<double>()) !=
+      wavelengths.end())
+    throw std::invalid_argument("population comparison: wavelengths must ascend");
   PopulationComparison c{specimen,    groupName, incidenceDeg,
                          wavelengths, model,     population.envelope(members, wavelengths),
                          {}};
@@ -87,11 +87,12 @@ void plotPopulationComparisons(const std::filesystem::path& png, const std::stri
       model.y.push_back(m.mean);
       model.yError.push_back(2 * m.standardError);
     }
-    panels.push_back({c.specimen + " vs " + c.group + ", " + fmt("%g", c.incidenceDeg) + "°",
-                      "wavelength (nm)",
-                      "reflectance",
-                      false,
-                      {range, model}});
+    panels.push_back(
+        {c.specimen + " vs " + c.group + ", " + fmt::format("{:g}", c.incidenceDeg) + "°",
+         "wavelength (nm)",
+         "reflectance",
+         false,
+         {range, model}});
   }
   plotPanels(png, title, panels, 1, 1400, 500 * static_cast<int>(comparisons.size()));
 }
@@ -99,7 +100,7 @@ void plotPopulationComparisons(const std::filesystem::path& png, const std::stri
 std::string populationTable(const std::vector<PopulationComparison>& comparisons) {
   if (comparisons.empty()) return "";
   const auto range = [](const PopulationRegion& r) {
-    return fmt("%g", r.firstNm) + "–" + fmt("%g", r.lastNm) + " nm";
+    return fmt::format("{:g}", r.firstNm) + "–" + fmt::format("{:g}", r.lastNm) + " nm";
   };
   std::ostringstream md;
   md << "| comparison |";
@@ -110,14 +111,16 @@ std::string populationTable(const std::vector<PopulationComparison>& comparisons
   for (const PopulationComparison& c : comparisons) {
     if (c.wavelengthNm != comparisons.front().wavelengthNm)
       throw std::invalid_argument("population table: comparisons on different wavelengths");
-    md << "| " << c.specimen << " vs " << c.group << ", " << fmt("%g", c.incidenceDeg) << "° |";
+    md << "| " << c.specimen << " vs " << c.group << ", " << fmt::format("{:g}", c.incidenceDeg)
+       << "° |";
     for (const PopulationRegion& r : c.regions) {
       md << " " << r.inside << "/" << r.count;
       if (r.worstExcess != 0)
-        md << " (" << fmt("%+.4f", r.worstExcess) << " at " << fmt("%g", r.worstExcessNm) << ")";
+        md << " (" << fmt::format("{:+.4f}", r.worstExcess) << " at "
+           << fmt::format("{:g}", r.worstExcessNm) << ")";
       md << " |";
     }
-    md << " " << fmt("%.4f", c.regions.back().rmsToMedian) << " |\n";
+    md << " " << fmt::format("{:.4f}", c.regions.back().rmsToMedian) << " |\n";
   }
   return md.str();
 }

@@ -1,21 +1,13 @@
 #include "app/skin_population.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 
 namespace hylios {
-namespace {
-
-std::string shortNumber(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
-
-}  // namespace
 
 double SkinPopulation::lightness(std::size_t index) const {
   const MeasuredSpectrum& s = subjects.at(index);
@@ -76,8 +68,8 @@ SkinPopulation loadSkinPopulation(const std::filesystem::path& file) {
     for (std::size_t i = 0; i < s.value.size(); ++i)
       if (s.value[i] < 0 || s.value[i] > 1.5)
         throw std::runtime_error(file.string() + ": " + s.label + " at " +
-                                 shortNumber(s.wavelengthNm[i]) + " nm is " +
-                                 shortNumber(s.value[i]) + ", not a reflectance factor");
+                                 fmt::format("{:g}", s.wavelengthNm[i]) + " nm is " +
+                                 fmt::format("{:g}", s.value[i]) + ", not a reflectance factor");
   return p;
 }
 

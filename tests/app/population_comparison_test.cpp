@@ -66,6 +66,8 @@ TEST(PopulationComparison, BadRequestsAreErrors) {
   EXPECT_THROW(compareWithPopulation("S9", {300}, {{0.1, 0}}, 8, p, {}, "a"),
                std::invalid_argument);
   EXPECT_THROW(compareWithPopulation("S9", {200}, {{0.1, 0}}, 8, p, {0}, "a"), std::out_of_range);
+  EXPECT_THROW(compareWithPopulation("S9", {500, 300}, {{0.1, 0}, {0.1, 0}}, 8, p, {0}, "a"),
+               std::invalid_argument);
 }
 
 }  // namespace
