@@ -62,6 +62,20 @@ double meanDifferenceZ(const std::vector<double>& a, const std::vector<double>& 
   return mean / sd;
 }
 
+/// skin_sphere_550 with a band of five channels, 420–700 nm, at 32 spp (tables cached in the
+/// build folder).
+SceneDesc fiveChannelSphere() {
+  setenv("HYLIOS_CACHE_DIR",
+         (std::string(HYLIOS_BINARY_DIR) + "/skin_table_render_test_cache").c_str(), 1);
+  SceneDesc scene =
+      loadSceneFile(std::string(HYLIOS_SOURCE_DIR) + "/scenes/test/skin_sphere_550.toml");
+  scene.film.bands[0].minNm = 420;
+  scene.film.bands[0].maxNm = 700;
+  scene.film.bands[0].stepNm = 70;
+  scene.film.samplesPerPixel = 32;
+  return scene;
+}
+
 }  // namespace
 
 // skin_sphere_550 (S1, uniform environment): the mean over the sphere and over its upper and lower
@@ -97,14 +111,7 @@ TEST(SkinTableRender, TableModeAgreesWithWalkMode) {
 // and of the tables' own sampling error (10⁴ rays per bin: σ_table ≈ 0.4 % of the mean, the
 // relative standard error of P(subsurface) averaged over the bins the sphere's rays use).
 TEST(SkinTableRender, BandTablesSampledAtOnceAgreeWithTheBandsWalk) {
-  setenv("HYLIOS_CACHE_DIR",
-         (std::string(HYLIOS_BINARY_DIR) + "/skin_table_render_test_cache").c_str(), 1);
-  SceneDesc scene =
-      loadSceneFile(std::string(HYLIOS_SOURCE_DIR) + "/scenes/test/skin_sphere_550.toml");
-  scene.film.bands[0].minNm = 420;
-  scene.film.bands[0].maxNm = 700;
-  scene.film.bands[0].stepNm = 70;
-  scene.film.samplesPerPixel = 32;
+  SceneDesc scene = fiveChannelSphere();
   ASSERT_EQ(scene.integrator.estimator, skin::Estimator::Spectral);
   std::vector<std::vector<double>> walk, table;
   render(scene, skin::SkinMode::Walk, 21, &walk);
@@ -128,14 +135,7 @@ TEST(SkinTableRender, BandTablesSampledAtOnceAgreeWithTheBandsWalk) {
 // independent), per channel, and it must lower the per-pixel spread of a colour channel between
 // two seeds (the blue end, where the band's exit weights spread most).
 TEST(SkinTableRender, ExitControlVariateAddsNothingInExpectation) {
-  setenv("HYLIOS_CACHE_DIR",
-         (std::string(HYLIOS_BINARY_DIR) + "/skin_table_render_test_cache").c_str(), 1);
-  SceneDesc scene =
-      loadSceneFile(std::string(HYLIOS_SOURCE_DIR) + "/scenes/test/skin_sphere_550.toml");
-  scene.film.bands[0].minNm = 420;
-  scene.film.bands[0].maxNm = 700;
-  scene.film.bands[0].stepNm = 70;
-  scene.film.samplesPerPixel = 32;
+  SceneDesc scene = fiveChannelSphere();
   LightDesc spot = scene.lights.front();
   spot.kind = LightDesc::Kind::Spot;
   spot.position = {0, 0, 3};
