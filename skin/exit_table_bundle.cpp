@@ -22,11 +22,17 @@ void entryRatios(const SpectralEntry& entry, std::vector<double>& out) {
   double top = -std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < n; ++j)
     top = std::max({top, entry.logTarget[j], entry.logProposal[j]});
-  double proposal = 0;
-  for (std::size_t j = 0; j < n; ++j) proposal += std::exp(entry.logProposal[j] - top);
   out.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    out[i] = std::exp(entry.logTarget[i] - top) * static_cast<double>(n) / proposal;
+  double proposal = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    out[j] = std::exp(entry.logProposal[j] - top);
+    proposal += out[j];
+  }
+  for (std::size_t i = 0; i < n; ++i) {  // the target differs where a transmission was forced
+    const double target =
+        entry.logTarget[i] == entry.logProposal[i] ? out[i] : std::exp(entry.logTarget[i] - top);
+    out[i] = target * static_cast<double>(n) / proposal;
+  }
 }
 
 }  // namespace
@@ -44,12 +50,25 @@ ExitTableBundle::ExitTableBundle(const SpectralWalk& entryWalk,
       throw std::invalid_argument("exit table bundle: the tables' bins differ");
   }
   exitingByBin_.resize(static_cast<std::size_t>(tables_.front()->bins()));
-  for (std::size_t k = 0; k < exitingByBin_.size(); ++k)
+  for (std::size_t k = 0; k < exitingByBin_.size(); ++k) {
+    ExitingInBin& exiting = exitingByBin_[k];
+    std::vector<const ExitTable::Bin*> bins;
     for (std::size_t i = 0; i < tables_.size(); ++i) {
       const ExitTable::Bin& b = tables_[i]->bins_[k];
-      if (b.subsurface > 0 && !b.offsetCdf.empty() && b.offsetCdf.back() > 0)
-        exitingByBin_[k].push_back(i);
+      if (b.subsurface > 0 && !b.offsetCdf.empty() && b.offsetCdf.back() > 0) {
+        // P(subsurface exit) as the table's own sampling has it: the outcome's share of the bin's
+        // total outcome weight (ExitTable::sampleBin).
+        exiting.members.push_back({i, b.subsurface / b.outcomeCdf.back()});
+        bins.push_back(&b);
+      }
     }
+    if (bins.empty()) continue;
+    const std::size_t cells = bins.front()->offsetWeights.size(), m = bins.size();
+    exiting.cellProbability.resize(cells * m);
+    for (std::size_t j = 0; j < m; ++j)
+      for (std::size_t c = 0; c < cells; ++c)
+        exiting.cellProbability[c * m + j] = bins[j]->offsetWeights[c] / bins[j]->offsetCdf.back();
+  }
 }
 
 void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
@@ -63,7 +82,7 @@ void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
   entryRatios(entry, ratio);
   const int k = tables_.front()->chooseBin(entry.direction.z, rng.uniform());
   const auto bin = static_cast<std::size_t>(k);
-  const std::vector<std::size_t>& exiting = exitingByBin_[bin];
+  const std::vector<ExitingMember>& exiting = exitingByBin_[bin].members;
   path.exitWeight.assign(n, 0.0);
   if (exiting.empty()) {
     path.end = PathEnd::Absorbed;
@@ -73,7 +92,7 @@ void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
   const double uHero = stratified ? (*stratified)[0] : rng.uniform();
   const double uCell = stratified ? (*stratified)[1] : rng.uniform();
   const std::size_t hero =
-      exiting[std::min(m - 1, static_cast<std::size_t>(uHero * static_cast<double>(m)))];
+      exiting[std::min(m - 1, static_cast<std::size_t>(uHero * static_cast<double>(m)))].member;
   const ExitTable& heroTable = *tables_[hero];
   const std::size_t A = static_cast<std::size_t>(heroTable.settings_.offsetAzimuthBins);
   const std::size_t cell = pickCumulative(heroTable.bins_[bin].offsetCdf, uCell);
@@ -86,25 +105,23 @@ void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
   const bool overflow = radial > heroTable.settings_.radialBins;
   density.assign(n, 0.0);
   double mixture = 0;
-  for (std::size_t i : exiting) {
-    const ExitTable& t = *tables_[i];
-    const ExitTable::Bin& b = t.bins_[bin];
-    double d = b.offsetWeights[cell] / b.offsetCdf.back();
+  const double* cellProbability = exitingByBin_[bin].cellProbability.data() + cell * m;
+  for (std::size_t j = 0; j < m; ++j) {
+    const ExitingMember& e = exiting[j];
+    double d = cellProbability[j];
     if (overflow) {
+      const ExitTable& t = *tables_[e.member];
       const double lo = t.radialCellLowerCm(radial), hi = t.radialCellUpperCm(k, radial);
       d = r < hi && hi > lo ? d / (hi - lo) : 0.0;
     }
-    density[i] = d;
+    density[e.member] = d;
     mixture += d;
   }
   mixture /= static_cast<double>(m);
   path.exitEntryWeight.assign(n, 0.0);
-  for (std::size_t i : exiting) {
-    const ExitTable::Bin& b = tables_[i]->bins_[bin];
-    // P(subsurface exit) as the table's own sampling has it: the outcome's share of the bin's
-    // total outcome weight (ExitTable::sampleBin).
-    const double subsurfaceShare = b.subsurface / b.outcomeCdf.back();
-    path.exitEntryWeight[i] = ratio[i] * subsurfaceShare;
+  for (const ExitingMember& e : exiting) {
+    const std::size_t i = e.member;
+    path.exitEntryWeight[i] = ratio[i] * e.subsurfaceShare;
     path.exitWeight[i] = path.exitEntryWeight[i] * density[i] / mixture;
   }
   path.end = PathEnd::SubsurfaceReflection;

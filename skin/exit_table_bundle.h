@@ -60,9 +60,21 @@ class ExitTableBundle {
               const std::array<double, 2>* stratified = nullptr) const;
 
  private:
+  /// A member with subsurface exits in a bin, with what sample() reads of it there.
+  struct ExitingMember {
+    std::size_t member;
+    double subsurfaceShare;  ///< subsurface weight / the bin's total outcome weight
+  };
+  /// Per bin: the members with exits there, and their offset cells' probabilities π_j(c) cell by
+  /// cell ([c · members + j]), so that a sample reads one contiguous run instead of one cache
+  /// line in every member's table.
+  struct ExitingInBin {
+    std::vector<ExitingMember> members;
+    std::vector<double> cellProbability;
+  };
   const SpectralWalk& entryWalk_;
   std::vector<const ExitTable*> tables_;
-  std::vector<std::vector<std::size_t>> exitingByBin_;  ///< per bin: the members with exits there
+  std::vector<ExitingInBin> exitingByBin_;
 };
 
 }  // namespace hylios::skin
