@@ -97,7 +97,18 @@ void Film::addBandSample(int x, int y, std::size_t band, const double* radiance,
   if (!wholeBandSamples_)
     throw std::logic_error("Film::addBandSample on a film filled one channel per sample");
   const std::vector<std::size_t>& channels = bandChannels_.at(band);
-  for (std::size_t i = 0; i < channels.size(); ++i) addSample(x, y, channels[i], radiance[i], odd);
+  if (channels.empty()) return;
+  requireInside("Film::addBandSample", x, y, channels.front(), width_, height_, channels_.size());
+  for (std::size_t i = 0; i < channels.size(); ++i) {  // the band's channels exist: checked once
+    if (!std::isfinite(radiance[i])) addSample(x, y, channels[i], radiance[i], odd);  // throws
+    const std::size_t s = slot(x, y, channels[i]);
+    sums_[s] += radiance[i];
+    counts_[s] += 1;
+    if (odd) {
+      oddSums_[s] += radiance[i];
+      oddCounts_[s] += 1;
+    }
+  }
 }
 
 double Film::value(int x, int y, std::size_t channel) const {
