@@ -427,7 +427,7 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
   std::vector<double>& work = path.work;
   double* transmitted = nullptr;
   if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
-    work.assign((1 + 2 * kLayerCount + s.stays.size()) * n, 0.0);
+    work.resize((1 + 2 * kLayerCount + s.stays.size()) * n);  // every value written by stayLosses
     transmitted = work.data();
     double* absorbed = transmitted + n;
     double* inMelanin = absorbed + kLayerCount * n;

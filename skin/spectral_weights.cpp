@@ -40,7 +40,11 @@ inline double surfaceReflectance(double cosI, double ni, double inside, double o
   return fresnelReflectance(cosI, inside * ni + outside, outside * ni + inside, cosT);
 }
 
-template <bool kForced>
+/// Facet densities within [1e-30, 1e30] (aspect² there) keep the whole refraction density within
+/// the double range: one log of the product instead of two.
+constexpr double kOneLogAspectSquaredBound = 1e30;
+
+template <bool kForced, bool kOneLog>
 __attribute__((always_inline)) inline void refractionDensities(std::size_t n, const Vec3& d,
                                                                const Vec3& t, const Vec3& macro,
                                                                const double* index, bool fromInside,
@@ -75,13 +79,14 @@ __attribute__((always_inline)) inline void refractionDensities(std::size_t n, co
     const double facetDensity = aspectSquared * cosFacet * cosFacet + sin2;  // D ∝ this⁻²
     const double jacobianDenominator = n1 * cosD - n2 * cosT;
     // (1 − F)·n2²|cos t| / (n1 cos d − n2 cos t)² in one log: each factor is bounded (the
-    // denominator is ≥ |n1 − n2|·|cos t| for a refraction); the facet density, which a small
-    // aspect ratio makes extreme, in its own.
+    // denominator is ≥ |n1 − n2|·|cos t| for a refraction); the facet density, which an extreme
+    // aspect ratio makes extreme, in the same log unless kOneLog is false (its own log).
     const double transmitted = 1.0 - reflectance;
     const double logTransmitted = kForced ? vectorLog(transmitted) : 0.0;
-    const double logDensityHere = vectorLog(transmitted * (n2 * n2 * std::fabs(cosT)) /
-                                            (jacobianDenominator * jacobianDenominator)) -
-                                  2.0 * vectorLog(facetDensity);
+    const double bounded =
+        transmitted * (n2 * n2 * std::fabs(cosT)) / (jacobianDenominator * jacobianDenominator);
+    const double logDensityHere = kOneLog ? vectorLog(bounded / (facetDensity * facetDensity))
+                                          : vectorLog(bounded) - 2.0 * vectorLog(facetDensity);
     logDensity[i] = valid ? logDensity[i] + logDensityHere : -HUGE_VAL;
     // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
     // lacks its (1 − F), which the MIS denominator must not hold either.
@@ -112,6 +117,9 @@ void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stay
   const std::size_t total = stayCount * n;
   for (std::size_t j = 0; j < total; ++j) depth[j] = vectorExp(-depth[j]);
   for (std::size_t i = 0; i < n; ++i) transmitted[i] = 1.0;
+  for (std::size_t j = 0; j < kLayerCount * n; ++j) absorbed[j] = inMelanin[j] = 0.0;
+  // Each stay's loss without the MIS ratio, which is the same for every stay of the path: it
+  // multiplies the layers' sums once at the end.
   for (std::size_t k = 0; k < stayCount; ++k) {  // in the order the path made them
     const SpectralPath::Stay& stay = stays[k];
     const SlabAbsorption& slab = slabs[stay.slab];
@@ -120,15 +128,30 @@ void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stay
     double* __restrict lostHere = absorbed + slab.layer * n;
     double* __restrict melaninHere = inMelanin + slab.layer * n;
     const double cm = stay.cm, melaninCm = stay.melaninCm, roulette = stay.roulette;
+    if (melaninCm > 0) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double melaninDepth = melaninMuA_perCm[i] * melaninCm;
+        const double stayDepth = muA[i] * cm + melaninDepth;
+        const double lost = roulette * (transmitted[i] - after[i]);
+        lostHere[i] += lost;
+        // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
+        const double share = stayDepth > 0 ? melaninDepth / (stayDepth > 0 ? stayDepth : 1.0) : 0.0;
+        melaninHere[i] += lost * share;
+        transmitted[i] = after[i];
+      }
+    } else {  // no melanosome met in this stay: no melanin share (no division)
+      for (std::size_t i = 0; i < n; ++i) {
+        lostHere[i] += roulette * (transmitted[i] - after[i]);
+        transmitted[i] = after[i];
+      }
+    }
+  }
+  for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
+    double* __restrict lost = absorbed + layer * n;
+    double* __restrict melanin = inMelanin + layer * n;
     for (std::size_t i = 0; i < n; ++i) {
-      const double melaninDepth = melaninMuA_perCm[i] * melaninCm;
-      const double stayDepth = muA[i] * cm + melaninDepth;
-      const double lost = roulette * (transmitted[i] - after[i]) * ratio[i];
-      lostHere[i] += lost;
-      // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
-      const double share = stayDepth > 0 ? melaninDepth / (stayDepth > 0 ? stayDepth : 1.0) : 0.0;
-      melaninHere[i] += lost * share;
-      transmitted[i] = after[i];
+      lost[i] *= ratio[i];
+      melanin[i] *= ratio[i];
     }
   }
 }
@@ -176,12 +199,20 @@ HYLIOS_VECTOR_CLONES
 void addRefractionDensities(std::size_t n, const Vec3& d, const Vec3& t, const Vec3& macro,
                             const double* index, bool fromInside, double aspectSquared, bool forced,
                             double* __restrict logDensity, double* __restrict proposalOffset) {
-  if (forced)
-    refractionDensities<true>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
-                              proposalOffset);
+  const bool oneLog = aspectSquared >= 1.0 / kOneLogAspectSquaredBound &&
+                      aspectSquared <= kOneLogAspectSquaredBound;
+  if (forced && oneLog)
+    refractionDensities<true, true>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
+                                    proposalOffset);
+  else if (forced)
+    refractionDensities<true, false>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
+                                     proposalOffset);
+  else if (oneLog)
+    refractionDensities<false, true>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
+                                     proposalOffset);
   else
-    refractionDensities<false>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
-                               proposalOffset);
+    refractionDensities<false, false>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
+                                      proposalOffset);
 }
 
 }  // namespace hylios::skin::spectral_weights

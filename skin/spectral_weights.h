@@ -33,9 +33,10 @@ struct SlabAbsorption {
 };
 
 /// Walks the stays in order. On return transmitted[i] = exp(−depth_i) of the whole path, and for
-/// every layer ℓ: absorbed[ℓ·n + i] += Σ over the stays in ℓ of roulette·(T_before − T_after)·
-/// ratio[i], inMelanin[ℓ·n + i] += the same shares weighted by melanin depth / stay depth.
-/// `work` (stayCount·n values) is workspace; absorbed and inMelanin hold kLayerCount·n values.
+/// every layer ℓ: absorbed[ℓ·n + i] = Σ over the stays in ℓ of roulette·(T_before − T_after)·
+/// ratio[i], inMelanin[ℓ·n + i] = the same shares weighted by melanin depth / stay depth (both
+/// overwritten). `work` (stayCount·n values) is workspace; absorbed and inMelanin hold
+/// kLayerCount·n values.
 void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
                 const SlabAbsorption* slabs, const double* melaninMuA_perCm, const double* ratio,
                 double* work, double* transmitted, double* absorbed, double* inMelanin);
