@@ -21,6 +21,15 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// Relative tolerance on index ratios that must be equal across the bundle (rounding only).
 constexpr double kRatioTolerance = 1e-9;
 
+/// Melanosome path-length table indices: log2 of the table's size, three indices from the top,
+/// middle and low bits of one 64-bit random number (each uniform and independent of the others).
+constexpr unsigned kTableIndexBits = 18;
+static_assert(kSpectralMelanosomeTableSamples == std::size_t{1} << kTableIndexBits &&
+              3 * kTableIndexBits <= 64);
+constexpr std::uint64_t kTableIndexMask = (std::uint64_t{1} << kTableIndexBits) - 1;
+/// The most indices drawn ahead (a complex's melanosomes, rounded up to three).
+constexpr unsigned kPendingTableIndices = 48;
+
 double sampleFreePathCm(double mu_perCm, Rng& rng) {
   return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) / mu_perCm : kInfinity;
 }
@@ -76,6 +85,10 @@ class SpectralWalk::State {
   double angleSumRad = 0;
   std::array<double, kLayerCount> rayleighCm{};
   std::array<unsigned, kLayerCount> rayleighEvents{};
+  /// Tabulated melanosomes: path-length table indices drawn ahead of the meeting that uses them,
+  /// so that their loads were prefetched (SpectralWalk::meetMelanosomes); used last in, first out.
+  std::array<std::uint32_t, kPendingTableIndices> pendingIndex;
+  unsigned pendingCount = 0;
   std::vector<double> logDensity;  ///< per λ: log p_λ(path) up to a common factor
   /// Per hero j: log q_j(path) − log p_j(path), q_j the density with which hero j proposed the
   /// path (0 except after a forced transmission, where q_j lacks the Fresnel factor).
@@ -118,6 +131,7 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
               {},
               {},
               {},
+              0.0,
               0.0};
     for (const SkinOptics& o : bundle) {
       requireShared(o[layer].thicknessCm == lo.thicknessCm, "the thickness of " + layerText(layer));
@@ -141,6 +155,7 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     if (!slab.hasRayleigh) slab.muRayleigh_perCm.clear();
     for (double mu : slab.muRayleigh_perCm) slab.logRayleigh.push_back(std::log(mu));
     slab.leastMuA_perCm = *std::min_element(slab.muA_perCm.begin(), slab.muA_perCm.end());
+    slab.largestMuA_perCm = *std::max_element(slab.muA_perCm.begin(), slab.muA_perCm.end());
     std::optional<Melanosomes> shape;
     if (slab.muMelanosome_perCm > 0) {
       const MelanosomeLayer checked(first, layer);  // validates the geometry and θo
@@ -182,6 +197,7 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
   }
   smallestSurfaceIndex_ = *std::min_element(surfaceIndex_.begin(), surfaceIndex_.end());
   leastMelaninMuA_perCm_ = *std::min_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
+  largestMelaninMuA_perCm_ = *std::max_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
   requireShared(options.roughSurface || !surfaceIndicesDiffer_,
                 "one surface index when the surface is smooth (a dispersive smooth interface "
                 "refracts each wavelength elsewhere: split the bundle)");
@@ -240,20 +256,35 @@ void SpectralWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng,
   traceEntered(s, rng);
 }
 
+void SpectralWalk::drawTableIndices(State& s, Rng& rng) {
+  const std::uint64_t bits = rng.nextU64();
+  s.pendingIndex[s.pendingCount++] = static_cast<std::uint32_t>(bits >> (64 - kTableIndexBits));
+  s.pendingIndex[s.pendingCount++] =
+      static_cast<std::uint32_t>((bits >> (64 - 2 * kTableIndexBits)) & kTableIndexMask);
+  s.pendingIndex[s.pendingCount++] =
+      static_cast<std::uint32_t>((bits >> (64 - 3 * kTableIndexBits)) & kTableIndexMask);
+}
+
+std::uint32_t SpectralWalk::takeTableIndex(State& s, Rng& rng) {
+  if (s.pendingCount == 0) drawTableIndices(s, rng);
+  return s.pendingIndex[--s.pendingCount];
+}
+
 void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
   const Melanosomes& m = *melanosomes_[k];
   const unsigned count =
       m.inComplexes ? m.wholeCount + (rng.uniform() < m.fractionalCount ? 1u : 0u) : 1u;
   double chordsOverA = 0;
   if (m.table) {  // a local sum, so that the table's loads (cache misses) overlap
-    const std::vector<float>& lengths = m.table->pathLengthsSingle();
-    const float* table = lengths.data();
-    const std::size_t last = lengths.size() - 1;
-    const double size = static_cast<double>(lengths.size());
+    const float* table = m.table->pathLengthsSingle().data();
     double sum = 0;
-    for (unsigned i = 0; i < count; ++i)
-      sum += table[std::min(static_cast<std::size_t>(rng.uniform() * size), last)];
+    for (unsigned i = 0; i < count; ++i) sum += table[takeTableIndex(s, rng)];
     chordsOverA = sum;
+    // Draws the next meeting's indices now and prefetches them from this layer's table (most
+    // meetings follow one in the same layer; in another layer they are still uniform indices).
+    const unsigned ahead = std::min(m.wholeCount + 1, kPendingTableIndices - 2);
+    while (s.pendingCount < ahead) drawTableIndices(s, rng);
+    for (unsigned i = 0; i < s.pendingCount; ++i) __builtin_prefetch(table + s.pendingIndex[i]);
   } else {
     for (unsigned i = 0; i < count; ++i)
       walkInsideMelanosome(m.geometry, rng, [&chordsOverA](double chord) {
@@ -422,19 +453,18 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
   const std::size_t n = wavelengthCount_;
   std::array<spectral_weights::SlabAbsorption, kLayerCount> slabs{};
   for (std::size_t k = 0; k < slabs_.size(); ++k)
-    slabs[k] = {slabs_[k].muA_perCm.data(), index(slabs_[k].layer)};
-  // Workspace: the transmittance per λ, then (layer absorption) the depth and the losses by layer.
+    slabs[k] = {slabs_[k].muA_perCm.data(), index(slabs_[k].layer), slabs_[k].largestMuA_perCm};
+  // Workspace: the transmittance per λ, then (layer absorption) the losses by layer.
   std::vector<double>& work = path.work;
   double* transmitted = nullptr;
-  if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
-    work.resize((1 + 2 * kLayerCount + s.stays.size()) * n);  // every value written by stayLosses
+  if (options_.layerAbsorption) {            // each stay's loss, in the order the path made them
+    work.resize((1 + 2 * kLayerCount) * n);  // every value written by stayLosses
     transmitted = work.data();
     double* absorbed = transmitted + n;
     double* inMelanin = absorbed + kLayerCount * n;
-    double* depth = inMelanin + kLayerCount * n;
     spectral_weights::stayLosses(n, s.stays.data(), s.stays.size(), slabs.data(),
-                                 melaninMuA_perCm_.data(), ratio.data(), depth, transmitted,
-                                 absorbed, inMelanin);
+                                 melaninMuA_perCm_.data(), largestMelaninMuA_perCm_, ratio.data(),
+                                 transmitted, absorbed, inMelanin);
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
         path.absorbed[i][layer] += absorbed[layer * n + i];

@@ -148,6 +148,7 @@ class SpectralWalk {
     std::vector<double> muRayleigh_perCm;  ///< per λ (empty without Rayleigh)
     std::vector<double> logRayleigh;       ///< per λ: log muRayleigh_perCm
     double leastMuA_perCm;                 ///< min over λ of muA_perCm
+    double largestMuA_perCm;               ///< max over λ of muA_perCm
   };
   struct Melanosomes {  ///< a layer's melanosome shape (λ-free)
     MelanosomeGeometry geometry;
@@ -184,6 +185,10 @@ class SpectralWalk {
   /// Adds the densities deferred in s (State::angleCount and the Rayleigh sums) to s.logDensity.
   void settleDensities(State& s) const;
   void meetMelanosomes(State& s, std::size_t k, Rng& rng) const;
+  /// Three uniform path-length table indices from one random number, onto s's pending indices.
+  static void drawTableIndices(State& s, Rng& rng);
+  /// The last pending table index (drawn first when none is pending).
+  static std::uint32_t takeTableIndex(State& s, Rng& rng);
 
   WalkOptions options_;
   std::size_t wavelengthCount_ = 0;
@@ -191,6 +196,7 @@ class SpectralWalk {
   std::vector<std::optional<Melanosomes>> melanosomes_;  ///< by slab
   std::vector<double> melaninMuA_perCm_;                 ///< per λ: inside melanosomes
   double leastMelaninMuA_perCm_ = 0;
+  double largestMelaninMuA_perCm_ = 0;
   std::vector<double> meanAngleRad_;           ///< per λ: θo of Algorithm 2
   std::vector<double> logAngleNormalisation_;  ///< per λ: log of p(θ)·e^{θ/θo}/sinθ
   bool anglesDiffer_ = false;

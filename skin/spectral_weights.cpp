@@ -93,59 +93,107 @@ __attribute__((always_inline)) inline void refractionDensities(std::size_t n, co
     if (kForced) proposalOffset[i] -= valid ? logTransmitted : 0.0;
   }
 }
+
+/// (−1)^{j+1}/j!, the coefficients of 1 − e^{−d} = Σ_{j ≥ 1} (−1)^{j+1} d^j/j!.
+constexpr int kSeriesTerms = 16;
+struct Expm1Series {
+  double coefficient[kSeriesTerms] = {};
+  constexpr Expm1Series() {
+    double inverseFactorial = 1.0;
+    for (int j = 1; j < kSeriesTerms; ++j) {
+      inverseFactorial /= j;
+      coefficient[j] = j % 2 == 1 ? inverseFactorial : -inverseFactorial;
+    }
+  }
+};
+constexpr Expm1Series kExpm1Series;
+
+/// 1 − e^{−d} for 0 ≤ d: with kTerms > 0 its series Σ_{j ≤ kTerms} (−1)^{j+1} d^j/j! (Horner),
+/// whose truncation stays below 2e−17 relative for d ≤ 1/64 (7 terms), 1/8 (11) and 1/2 (15);
+/// with kTerms = 0, 1 − vectorExp(−d) (d > 1/2, no cancellation to speak of). The series costs
+/// about half of vectorExp and keeps a small loss's relative accuracy.
+template <int kTerms>
+__attribute__((always_inline)) inline double absorbedFraction(double d) {
+  if constexpr (kTerms == 0) {
+    return 1.0 - vectorExp(-d);
+  } else {
+    static_assert(kTerms < kSeriesTerms);
+    double p = kExpm1Series.coefficient[kTerms];
+    for (int j = kTerms - 1; j >= 1; --j) p = p * d + kExpm1Series.coefficient[j];
+    return p * d;
+  }
+}
+
+/// One stay of stayLosses: the path's transmittance per λ updated, the stay's loss (without the
+/// MIS ratio) added to its layer's sums.
+struct StayBooking {
+  std::size_t n;
+  const double* muA_perCm;
+  const double* melaninMuA_perCm;
+  double cm, melaninCm, roulette;
+  double* transmitted;
+  double* lost;
+  double* lostInMelanin;
+};
+
+template <int kTerms, bool kMelanin>
+__attribute__((always_inline)) inline void bookStay(const StayBooking& b) {
+  const double* __restrict muA = b.muA_perCm;
+  const double* __restrict melaninMuA = b.melaninMuA_perCm;
+  double* __restrict transmitted = b.transmitted;
+  double* __restrict lost = b.lost;
+  double* __restrict lostInMelanin = b.lostInMelanin;
+  const double cm = b.cm, melaninCm = b.melaninCm, roulette = b.roulette;
+  for (std::size_t i = 0; i < b.n; ++i) {
+    const double melaninDepth = kMelanin ? melaninMuA[i] * melaninCm : 0.0;
+    const double d = muA[i] * cm + melaninDepth;
+    const double fraction = absorbedFraction<kTerms>(d);
+    const double before = transmitted[i];
+    const double lostHere = roulette * (before * fraction);
+    lost[i] += lostHere;
+    if (kMelanin) {
+      // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
+      const double share = d > 0 ? melaninDepth / (d > 0 ? d : 1.0) : 0.0;
+      lostInMelanin[i] += lostHere * share;
+    }
+    transmitted[i] = before - before * fraction;
+  }
+}
 }  // namespace
 
 HYLIOS_VECTOR_CLONES
 void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
-                const SlabAbsorption* slabs, const double* melaninMuA_perCm, const double* ratio,
-                double* __restrict work, double* __restrict transmitted,
+                const SlabAbsorption* slabs, const double* melaninMuA_perCm,
+                double largestMelaninMuA_perCm, const double* ratio, double* __restrict transmitted,
                 double* __restrict absorbed, double* __restrict inMelanin) {
-  // Three passes, so that the exponentials (most of the cost) form one loop without a chain from
-  // stay to stay: the depth after each stay, its transmittance, then each stay's loss.
-  double* __restrict depth = work;  // stayCount·n: the depth after stay k, then exp(−depth)
-  for (std::size_t k = 0; k < stayCount; ++k) {
-    const SpectralPath::Stay& stay = stays[k];
-    const double* __restrict muA = slabs[stay.slab].muA_perCm;
-    const double cm = stay.cm, melaninCm = stay.melaninCm;
-    const double* __restrict before = k > 0 ? depth + (k - 1) * n : nullptr;
-    double* __restrict after = depth + k * n;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double stayDepth = muA[i] * cm + melaninMuA_perCm[i] * melaninCm;
-      after[i] = (k > 0 ? before[i] : 0.0) + stayDepth;
-    }
-  }
-  const std::size_t total = stayCount * n;
-  for (std::size_t j = 0; j < total; ++j) depth[j] = vectorExp(-depth[j]);
   for (std::size_t i = 0; i < n; ++i) transmitted[i] = 1.0;
   for (std::size_t j = 0; j < kLayerCount * n; ++j) absorbed[j] = inMelanin[j] = 0.0;
-  // Each stay's loss without the MIS ratio, which is the same for every stay of the path: it
-  // multiplies the layers' sums once at the end.
   for (std::size_t k = 0; k < stayCount; ++k) {  // in the order the path made them
     const SpectralPath::Stay& stay = stays[k];
     const SlabAbsorption& slab = slabs[stay.slab];
-    const double* __restrict muA = slab.muA_perCm;
-    const double* __restrict after = depth + k * n;
-    double* __restrict lostHere = absorbed + slab.layer * n;
-    double* __restrict melaninHere = inMelanin + slab.layer * n;
-    const double cm = stay.cm, melaninCm = stay.melaninCm, roulette = stay.roulette;
-    if (melaninCm > 0) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const double melaninDepth = melaninMuA_perCm[i] * melaninCm;
-        const double stayDepth = muA[i] * cm + melaninDepth;
-        const double lost = roulette * (transmitted[i] - after[i]);
-        lostHere[i] += lost;
-        // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
-        const double share = stayDepth > 0 ? melaninDepth / (stayDepth > 0 ? stayDepth : 1.0) : 0.0;
-        melaninHere[i] += lost * share;
-        transmitted[i] = after[i];
-      }
-    } else {  // no melanosome met in this stay: no melanin share (no division)
-      for (std::size_t i = 0; i < n; ++i) {
-        lostHere[i] += roulette * (transmitted[i] - after[i]);
-        transmitted[i] = after[i];
-      }
-    }
+    const StayBooking booking{n,
+                              slab.muA_perCm,
+                              melaninMuA_perCm,
+                              stay.cm,
+                              stay.melaninCm,
+                              stay.roulette,
+                              transmitted,
+                              absorbed + slab.layer * n,
+                              inMelanin + slab.layer * n};
+    // The cheapest exact form of the absorbed fraction, chosen by a bound on every λ's depth.
+    const double largest =
+        slab.largestMuA_perCm * stay.cm + largestMelaninMuA_perCm * stay.melaninCm;
+    const bool melanin = stay.melaninCm > 0;
+    if (largest <= 1.0 / 64)
+      melanin ? bookStay<7, true>(booking) : bookStay<7, false>(booking);
+    else if (largest <= 1.0 / 8)
+      melanin ? bookStay<11, true>(booking) : bookStay<11, false>(booking);
+    else if (largest <= 0.5)
+      melanin ? bookStay<15, true>(booking) : bookStay<15, false>(booking);
+    else
+      melanin ? bookStay<0, true>(booking) : bookStay<0, false>(booking);
   }
+  // The MIS ratio is the same for every stay of the path: it multiplies the layers' sums once.
   for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
     double* __restrict lost = absorbed + layer * n;
     double* __restrict melanin = inMelanin + layer * n;

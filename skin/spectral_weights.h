@@ -30,16 +30,19 @@ namespace hylios::skin::spectral_weights {
 struct SlabAbsorption {
   const double* muA_perCm;  ///< n values
   std::size_t layer;        ///< index(layer) < kLayerCount
+  double largestMuA_perCm;  ///< max of muA_perCm (bounds a stay's depth: stayLosses' series)
 };
 
-/// Walks the stays in order. On return transmitted[i] = exp(−depth_i) of the whole path, and for
-/// every layer ℓ: absorbed[ℓ·n + i] = Σ over the stays in ℓ of roulette·(T_before − T_after)·
-/// ratio[i], inMelanin[ℓ·n + i] = the same shares weighted by melanin depth / stay depth (both
-/// overwritten). `work` (stayCount·n values) is workspace; absorbed and inMelanin hold
-/// kLayerCount·n values.
+/// Walks the stays in order. On return transmitted[i] = exp(−depth_i) of the whole path (as the
+/// product of the stays' transmittances), and for every layer ℓ: absorbed[ℓ·n + i] = Σ over the
+/// stays in ℓ of roulette·(T_before − T_after)·ratio[i], inMelanin[ℓ·n + i] = the same shares
+/// weighted by melanin depth / stay depth (both overwritten); absorbed and inMelanin hold
+/// kLayerCount·n values. Each stay's absorbed fraction 1 − e^{−d} is summed as its series where
+/// the bound largestMuA_perCm·cm + largestMelaninMuA_perCm·melaninCm on every λ's d is small.
 void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
-                const SlabAbsorption* slabs, const double* melaninMuA_perCm, const double* ratio,
-                double* work, double* transmitted, double* absorbed, double* inMelanin);
+                const SlabAbsorption* slabs, const double* melaninMuA_perCm,
+                double largestMelaninMuA_perCm, const double* ratio, double* transmitted,
+                double* absorbed, double* inMelanin);
 
 /// depth[i] = Σ_k slabs[k].muA_perCm[i]·pathCm[k] + melaninMuA_perCm[i]·melaninCm[k].
 void pathDepths(std::size_t n, std::size_t slabCount, const SlabAbsorption* slabs,
