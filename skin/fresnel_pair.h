@@ -20,6 +20,11 @@ class FresnelPair {
         relative_(nTransmitted / nIncident),
         matched_(nIncident == nTransmitted) {}
 
+  /// n1 = n2: no interface.
+  bool matched() const { return matched_; }
+  /// η = n1/n2, the factor of a refracted direction's tangential part.
+  double ratio() const { return ratio_; }
+
   /// Reflectance at |cosIncident| (sign ignored); cosTransmitted receives the refraction cosine
   /// (0 under total internal reflection, where the reflectance is exactly 1). Matched indices
   /// give 0, as fresnel() does.

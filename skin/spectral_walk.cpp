@@ -27,11 +27,25 @@ constexpr unsigned kTableIndexBits = 18;
 static_assert(kSpectralMelanosomeTableSamples == std::size_t{1} << kTableIndexBits &&
               3 * kTableIndexBits <= 64);
 constexpr std::uint64_t kTableIndexMask = (std::uint64_t{1} << kTableIndexBits) - 1;
+/// log(1/kSpectralRouletteWeight): the roulette's depth bound while no roulette was survived.
+const double kRouletteDepthBoundAtOne = std::log(1.0 / kSpectralRouletteWeight);
 /// The most indices drawn ahead (a complex's melanosomes, rounded up to three).
 constexpr unsigned kPendingTableIndices = 48;
 
-double sampleFreePathCm(double mu_perCm, Rng& rng) {
-  return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) / mu_perCm : kInfinity;
+/// An exponential free path of coefficient μ (given with its inverse): +∞ for μ = 0.
+double sampleFreePathCm(double mu_perCm, double inverseMuCm, Rng& rng) {
+  return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) * inverseMuCm : kInfinity;
+}
+
+/// crossPlaneInterfaceZ (skin/interface_crossing.h) through a precomputed index pair: the
+/// Fresnel test with one division instead of three, the same law.
+InterfaceCrossing crossPlaneInterfaceZ(const Vec3& d, const FresnelPair& pair, Rng& rng) {
+  if (pair.matched()) return {d, true};
+  double cosTransmitted = 0;
+  const double reflectance = pair.reflectance(d.z, cosTransmitted);
+  if (reflectance >= 1.0 || rng.uniform() < reflectance) return {{d.x, d.y, -d.z}, false};
+  const double ratio = pair.ratio();
+  return {{d.x * ratio, d.y * ratio, std::copysign(cosTransmitted, d.z)}, true};
 }
 
 bool sameRatio(double a, double b) { return std::fabs(a - b) <= kRatioTolerance * std::fabs(b); }
@@ -78,6 +92,10 @@ class SpectralWalk::State {
   double stayCm = 0, stayMelaninCm = 0;         ///< path in the current slab since the stay began
   std::array<double, kLayerCount> pathCm{};     ///< by slab: path travelled there (λ-free)
   std::array<double, kLayerCount> melaninCm{};  ///< by slab: path inside melanin (λ-free)
+  /// The optical depth of the least absorbed λ, summed stay by stay (Russian roulette's bound),
+  /// and the depth below which roulette × e^{−depth} stays above kSpectralRouletteWeight.
+  double leastDepth = 0;
+  double rouletteDepthBound = kRouletteDepthBoundAtOne;
   /// Sums whose per-λ densities SpectralWalk::settleDensities adds to logDensity once, at the end
   /// (each λ's log density is linear in them): Algorithm 2's scatterings (count, Σθ), and by slab
   /// the path flown while Rayleigh was available and the Rayleigh events.
@@ -132,7 +150,11 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
               {},
               {},
               0.0,
-              0.0};
+              0.0,
+              kInfinity,
+              {},
+              {},
+              {}};
     for (const SkinOptics& o : bundle) {
       requireShared(o[layer].thicknessCm == lo.thicknessCm, "the thickness of " + layerText(layer));
       requireShared(
@@ -156,6 +178,11 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     for (double mu : slab.muRayleigh_perCm) slab.logRayleigh.push_back(std::log(mu));
     slab.leastMuA_perCm = *std::min_element(slab.muA_perCm.begin(), slab.muA_perCm.end());
     slab.largestMuA_perCm = *std::max_element(slab.muA_perCm.begin(), slab.muA_perCm.end());
+    if (slab.muMelanosome_perCm > 0) slab.inverseMuMelanosomeCm = 1.0 / slab.muMelanosome_perCm;
+    for (double mu : slab.muRayleigh_perCm) {
+      const double scatter = slab.muMelanosome_perCm + mu;
+      slab.inverseMuScatterCm.push_back(scatter > 0 ? 1.0 / scatter : kInfinity);
+    }
     std::optional<Melanosomes> shape;
     if (slab.muMelanosome_perCm > 0) {
       const MelanosomeLayer checked(first, layer);  // validates the geometry and θo
@@ -181,6 +208,12 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     melanosomes_.push_back(shape);
     slabs_.push_back(std::move(slab));
     depthCm += lo.thicknessCm;
+  }
+  for (std::size_t k = 0; k + 1 < slabs_.size(); ++k) {
+    Slab& upper = slabs_[k];
+    Slab& lower = slabs_[k + 1];
+    upper.intoDeeper = FresnelPair(upper.referenceIndex, lower.referenceIndex);
+    lower.intoShallower = FresnelPair(lower.referenceIndex, upper.referenceIndex);
   }
   for (const SkinOptics& o : bundle) {
     requireShared(o.surfaceAspectRatio == first.surfaceAspectRatio,
@@ -399,22 +432,31 @@ bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitE
 void SpectralWalk::endStay(State& s) const {
   s.pathCm[s.slab] += s.stayCm;
   s.melaninCm[s.slab] += s.stayMelaninCm;
-  if (options_.layerAbsorption && (s.stayCm > 0 || s.stayMelaninCm > 0))
-    s.stays.push_back({s.slab, s.stayCm, s.stayMelaninCm, s.roulette});
+  s.leastDepth +=
+      slabs_[s.slab].leastMuA_perCm * s.stayCm + leastMelaninMuA_perCm_ * s.stayMelaninCm;
+  if (options_.layerAbsorption && (s.stayCm > 0 || s.stayMelaninCm > 0)) {
+    // Stored field by field into the vector: a temporary copied in whole made the copy's wide
+    // load wait on the temporary's narrow stores (a store-forwarding stall, 3 % of the walk).
+    SpectralPath::Stay& stay = s.stays.emplace_back();
+    stay.slab = s.slab;
+    stay.cm = s.stayCm;
+    stay.melaninCm = s.stayMelaninCm;
+    stay.roulette = s.roulette;
+  }
   s.stayCm = s.stayMelaninCm = 0;
 }
 
 bool SpectralWalk::survivesRoulette(State& s, Rng& rng) const {
   // The transmittance of the least absorbed λ bounds every λ's (the MIS ratio is left out:
   // any survival probability that depends only on the path so far keeps the walk unbiased).
-  double depth = 0;
-  for (std::size_t k = 0; k < slabs_.size(); ++k)
-    depth += slabs_[k].leastMuA_perCm * s.pathCm[k] + leastMelaninMuA_perCm_ * s.melaninCm[k];
-  const double largest = s.roulette * std::exp(-depth);
+  // Most checks pass without an exp: below the bound the largest weight is above the threshold.
+  if (s.leastDepth <= s.rouletteDepthBound) return true;
+  const double largest = s.roulette * std::exp(-s.leastDepth);
   if (largest >= kSpectralRouletteWeight) return true;
   const double survival = largest / kSpectralRouletteWeight;
   if (survival > 0 && rng.uniform() < survival) {
     s.roulette /= survival;
+    s.rouletteDepthBound = std::log(s.roulette / kSpectralRouletteWeight);
     return true;
   }
   finish(s, PathEnd::Absorbed, false);
@@ -498,7 +540,9 @@ void SpectralWalk::traceEntered(State& s, Rng& rng) const {
     const double toBoundaryCm = d.z > 0   ? (slab.bottomCm - s.position.z) / d.z
                                 : d.z < 0 ? (slab.topCm - s.position.z) / d.z
                                           : kInfinity;
-    const double freePathCm = sampleFreePathCm(muScatter, rng);
+    const double inverseMuCm =
+        rayleighHere ? slab.inverseMuScatterCm[s.hero] : slab.inverseMuMelanosomeCm;
+    const double freePathCm = sampleFreePathCm(muScatter, inverseMuCm, rng);
     const bool collides = freePathCm < toBoundaryCm;
     const double flightCm = collides ? freePathCm : toBoundaryCm;
     if (!std::isfinite(flightCm)) break;  // parallel to the layers with nothing to stop it
@@ -540,7 +584,7 @@ void SpectralWalk::traceEntered(State& s, Rng& rng) const {
     }
     const std::size_t next = d.z > 0 ? s.slab + 1 : s.slab - 1;
     const InterfaceCrossing crossing =
-        crossPlaneInterfaceZ(d, slab.referenceIndex, slabs_[next].referenceIndex, rng);
+        crossPlaneInterfaceZ(d, d.z > 0 ? slab.intoDeeper : slab.intoShallower, rng);
     d = crossing.direction;
     if (crossing.transmitted) {  // a layer's stay ends, then roulette
       endStay(s);

@@ -149,6 +149,13 @@ class SpectralWalk {
     std::vector<double> logRayleigh;       ///< per λ: log muRayleigh_perCm
     double leastMuA_perCm;                 ///< min over λ of muA_perCm
     double largestMuA_perCm;               ///< max over λ of muA_perCm
+    /// 1/μ of the free paths (a multiply per event instead of a division): melanosomes alone,
+    /// and per hero with Rayleigh (empty without Rayleigh); +∞ where μ = 0 (not used there).
+    double inverseMuMelanosomeCm;
+    std::vector<double> inverseMuScatterCm;
+    /// The crossings into the next deeper and shallower slab (precomputed ratios; unused at the
+    /// stack's ends).
+    FresnelPair intoDeeper, intoShallower;
   };
   struct Melanosomes {  ///< a layer's melanosome shape (λ-free)
     MelanosomeGeometry geometry;
