@@ -225,6 +225,7 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     logAngleNormalisation_.push_back(logAngleNormalisation(o.meanScatteringAngleRad));
     anglesDiffer_ = anglesDiffer_ || o.meanScatteringAngleRad != first.meanScatteringAngleRad;
     surfaceIndex_.push_back(o[slabs_.front().layer].refractiveIndex);
+    inverseSurfaceIndex_.push_back(1.0 / surfaceIndex_.back());
     bottomIndex_.push_back(o[slabs_.back().layer].refractiveIndex);
     surfaceIndicesDiffer_ = surfaceIndicesDiffer_ || surfaceIndex_.back() != surfaceIndex_.front();
   }
@@ -370,8 +371,9 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
   }
   if (!delta) {  // each λ's facet through the generalised half vector (skin/spectral_weights.h)
     spectral_weights::addRefractionDensities(wavelengthCount_, d, t, macro, surfaceIndex_.data(),
-                                             fromInside, aspectSquared_, forceTransmission,
-                                             s.logDensity.data(), s.proposalOffset.data());
+                                             inverseSurfaceIndex_.data(), fromInside,
+                                             aspectSquared_, forceTransmission, s.logDensity.data(),
+                                             s.proposalOffset.data());
     return true;
   }
   for (std::size_t i = 0; i < wavelengthCount_; ++i) {

@@ -32,6 +32,23 @@ inline double fresnelReflectance(double cosThetaIncident, double n1, double n2, 
   return same ? 0.0 : (total ? 1.0 : reflectance);
 }
 
+/// fresnelReflectance's reflectance with the ratio n1/n2 given and the s and p terms over one
+/// division (FresnelPair's form, skin/fresnel_pair.h): the same law to rounding, for the
+/// refraction densities, where divisions were a large part of the kernel's cost.
+inline double refractionReflectance(double cosThetaIncident, double n1, double n2, double ratio) {
+  const double absCos = std::fabs(cosThetaIncident);
+  const double cosI = absCos < 1.0 ? absCos : 1.0;
+  const double cosTSquared = (1.0 - ratio) * (1.0 + ratio) + ratio * ratio * cosI * cosI;
+  const bool total = cosTSquared <= 0.0;  // total internal reflection
+  const double root = std::sqrt(total ? 0.0 : cosTSquared);
+  const double sNumerator = n1 * cosI - n2 * root, sDenominator = n1 * cosI + n2 * root;
+  const double pNumerator = n1 * root - n2 * cosI, pDenominator = n1 * root + n2 * cosI;
+  const double sN2 = sNumerator * sNumerator, sD2 = sDenominator * sDenominator;
+  const double pN2 = pNumerator * pNumerator, pD2 = pDenominator * pDenominator;
+  const double reflectance = 0.5 * (sN2 * pD2 + pN2 * sD2) / (sD2 * pD2);
+  return n1 == n2 ? 0.0 : (total ? 1.0 : reflectance);
+}
+
 /// The air–skin reflectance at index ni: (n1, n2) = (ni, 1) from inside, (1, ni) from the air,
 /// chosen by arithmetic (inside = 1 or 0, outside = 1 − inside; exact: 0 or 1 factors), since a
 /// select on the flag stops a loop vectorising.
@@ -45,12 +62,10 @@ inline double surfaceReflectance(double cosI, double ni, double inside, double o
 constexpr double kOneLogAspectSquaredBound = 1e30;
 
 template <bool kForced, bool kOneLog>
-__attribute__((always_inline)) inline void refractionDensities(std::size_t n, const Vec3& d,
-                                                               const Vec3& t, const Vec3& macro,
-                                                               const double* index, bool fromInside,
-                                                               double aspectSquared,
-                                                               double* __restrict logDensity,
-                                                               double* __restrict proposalOffset) {
+__attribute__((always_inline)) inline void refractionDensities(
+    std::size_t n, const Vec3& d, const Vec3& t, const Vec3& macro, const double* index,
+    const double* inverseIndex, bool fromInside, double aspectSquared,
+    double* __restrict logDensity, double* __restrict proposalOffset) {
   // (n1, n2) = (index, 1) or (1, index) by arithmetic: a select on the flag stops vectorising.
   const double inside = fromInside ? 1.0 : 0.0, outside = 1.0 - inside;
   const double dx = d.x, dy = d.y, dz = d.z, tx = t.x, ty = t.y, tz = t.z;
@@ -68,8 +83,8 @@ __attribute__((always_inline)) inline void refractionDensities(std::size_t n, co
     hx = flip ? hx * -1.0 : hx, hy = flip ? hy * -1.0 : hy, hz = flip ? hz * -1.0 : hz;
     const double cosD = dx * hx + dy * hy + dz * hz, cosT = tx * hx + ty * hy + tz * hz;
     const double cosFacet = hx * mx + hy * my + hz * mz;  // the facet's polar angle about macro
-    double cosTransmitted;
-    const double reflectance = fresnelReflectance(cosD, n1, n2, cosTransmitted);
+    const double ratio = inside * ni + outside * inverseIndex[i];  // n1/n2, exact: 0 or 1 factors
+    const double reflectance = refractionReflectance(cosD, n1, n2, ratio);
     // Where that facet exists: facing, with some transmission (the conditions as 0/1 doubles:
     // GCC 12 does not vectorise this loop with a conjunction of bools).
     const double okLength = hasLength ? 1.0 : 0.0, okT = cosT < 0 ? 1.0 : 0.0;
@@ -83,10 +98,11 @@ __attribute__((always_inline)) inline void refractionDensities(std::size_t n, co
     // aspect ratio makes extreme, in the same log unless kOneLog is false (its own log).
     const double transmitted = 1.0 - reflectance;
     const double logTransmitted = kForced ? vectorLog(transmitted) : 0.0;
-    const double bounded =
-        transmitted * (n2 * n2 * std::fabs(cosT)) / (jacobianDenominator * jacobianDenominator);
-    const double logDensityHere = kOneLog ? vectorLog(bounded / (facetDensity * facetDensity))
-                                          : vectorLog(bounded) - 2.0 * vectorLog(facetDensity);
+    const double numerator = transmitted * (n2 * n2 * std::fabs(cosT));
+    const double jacobianSquared = jacobianDenominator * jacobianDenominator;
+    const double logDensityHere =
+        kOneLog ? vectorLog(numerator / (jacobianSquared * (facetDensity * facetDensity)))
+                : vectorLog(numerator / jacobianSquared) - 2.0 * vectorLog(facetDensity);
     logDensity[i] = valid ? logDensity[i] + logDensityHere : -HUGE_VAL;
     // A forced transmission was proposed without the Fresnel factor: hero i's proposal density
     // lacks its (1 − F), which the MIS denominator must not hold either.
@@ -245,22 +261,23 @@ void addLogReflectances(std::size_t n, double cosI, const double* index, bool fr
 
 HYLIOS_VECTOR_CLONES
 void addRefractionDensities(std::size_t n, const Vec3& d, const Vec3& t, const Vec3& macro,
-                            const double* index, bool fromInside, double aspectSquared, bool forced,
-                            double* __restrict logDensity, double* __restrict proposalOffset) {
+                            const double* index, const double* inverseIndex, bool fromInside,
+                            double aspectSquared, bool forced, double* __restrict logDensity,
+                            double* __restrict proposalOffset) {
   const bool oneLog = aspectSquared >= 1.0 / kOneLogAspectSquaredBound &&
                       aspectSquared <= kOneLogAspectSquaredBound;
   if (forced && oneLog)
-    refractionDensities<true, true>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
-                                    proposalOffset);
+    refractionDensities<true, true>(n, d, t, macro, index, inverseIndex, fromInside, aspectSquared,
+                                    logDensity, proposalOffset);
   else if (forced)
-    refractionDensities<true, false>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
-                                     proposalOffset);
+    refractionDensities<true, false>(n, d, t, macro, index, inverseIndex, fromInside, aspectSquared,
+                                     logDensity, proposalOffset);
   else if (oneLog)
-    refractionDensities<false, true>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
-                                     proposalOffset);
+    refractionDensities<false, true>(n, d, t, macro, index, inverseIndex, fromInside, aspectSquared,
+                                     logDensity, proposalOffset);
   else
-    refractionDensities<false, false>(n, d, t, macro, index, fromInside, aspectSquared, logDensity,
-                                      proposalOffset);
+    refractionDensities<false, false>(n, d, t, macro, index, inverseIndex, fromInside,
+                                      aspectSquared, logDensity, proposalOffset);
 }
 
 }  // namespace hylios::skin::spectral_weights

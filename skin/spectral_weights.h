@@ -65,8 +65,10 @@ void addLogReflectances(std::size_t n, double cosI, const double* index, bool fr
 /// exists (facing, Fresnel < 1), logDensity[i] += log of its facet density, 1 − F, n2²|cos t| and
 /// the Jacobian 1/(n1 cos d − n2 cos t)², and proposalOffset[i] −= log(1 − F) when `forced`
 /// (a transmission proposed without its Fresnel factor); elsewhere logDensity[i] = −∞.
+/// inverseIndex[i] = 1/index[i] (the Fresnel ratio from the air without a division).
 void addRefractionDensities(std::size_t n, const Vec3& d, const Vec3& t, const Vec3& macro,
-                            const double* index, bool fromInside, double aspectSquared, bool forced,
-                            double* logDensity, double* proposalOffset);
+                            const double* index, const double* inverseIndex, bool fromInside,
+                            double aspectSquared, bool forced, double* logDensity,
+                            double* proposalOffset);
 
 }  // namespace hylios::skin::spectral_weights

@@ -23,23 +23,20 @@ struct CosSin {
 };
 CosSin cosSinOf(double theta) {
   if (!(theta <= kLargestSeriesAngleRad)) return {std::cos(theta), std::sin(theta)};
-  const double t2 = theta * theta;
-  // sinθ = θ(1 − θ²/3! + θ⁴/5! − … − θ¹⁴/15!), cosθ = 1 − θ²/2! + … − θ¹⁴/14! (Horner).
-  double s = -1.0 / 1307674368000.0;  // −1/15!
-  s = s * t2 + 1.0 / 6227020800.0;    // 1/13!
-  s = s * t2 - 1.0 / 39916800.0;      // −1/11!
-  s = s * t2 + 1.0 / 362880.0;        // 1/9!
-  s = s * t2 - 1.0 / 5040.0;          // −1/7!
-  s = s * t2 + 1.0 / 120.0;           // 1/5!
-  s = s * t2 - 1.0 / 6.0;             // −1/3!
-  double c = -1.0 / 87178291200.0;    // −1/14!
-  c = c * t2 + 1.0 / 479001600.0;     // 1/12!
-  c = c * t2 - 1.0 / 3628800.0;       // −1/10!
-  c = c * t2 + 1.0 / 40320.0;         // 1/8!
-  c = c * t2 - 1.0 / 720.0;           // −1/6!
-  c = c * t2 + 1.0 / 24.0;            // 1/4!
-  c = c * t2 - 0.5;                   // −1/2!
-  return {1.0 + c * t2, theta + theta * (s * t2)};
+  // sinθ = θ(1 − θ²/3! + θ⁴/5! − … − θ¹⁴/15!), cosθ = 1 − θ²/2! + … − θ¹⁴/14!, as polynomials in
+  // u = θ² by Estrin's scheme (pairs, then u², u⁴): a third of Horner's chain of dependent steps.
+  const double u = theta * theta, u2 = u * u, u4 = u2 * u2;
+  const double s01 = -1.0 / 6.0 + u * (1.0 / 120.0);                // −1/3!, 1/5!
+  const double s23 = -1.0 / 5040.0 + u * (1.0 / 362880.0);          // −1/7!, 1/9!
+  const double s45 = -1.0 / 39916800.0 + u * (1.0 / 6227020800.0);  // −1/11!, 1/13!
+  const double s6 = -1.0 / 1307674368000.0;                         // −1/15!
+  const double sinSeries = (s01 + u2 * s23) + u4 * (s45 + u2 * s6);
+  const double c01 = -0.5 + u * (1.0 / 24.0);                     // −1/2!, 1/4!
+  const double c23 = -1.0 / 720.0 + u * (1.0 / 40320.0);          // −1/6!, 1/8!
+  const double c45 = -1.0 / 3628800.0 + u * (1.0 / 479001600.0);  // −1/10!, 1/12!
+  const double c6 = -1.0 / 87178291200.0;                         // −1/14!
+  const double cosSeries = (c01 + u2 * c23) + u4 * (c45 + u2 * c6);
+  return {1.0 + u * cosSeries, theta + theta * (u * sinSeries)};
 }
 }  // namespace
 
