@@ -290,7 +290,7 @@ void SpectralWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng,
   traceEntered(s, rng);
 }
 
-void SpectralWalk::drawTableIndices(State& s, Rng& rng) {
+inline void SpectralWalk::drawTableIndices(State& s, Rng& rng) {
   const std::uint64_t bits = rng.nextU64();
   s.pendingIndex[s.pendingCount++] = static_cast<std::uint32_t>(bits >> (64 - kTableIndexBits));
   s.pendingIndex[s.pendingCount++] =
@@ -299,7 +299,7 @@ void SpectralWalk::drawTableIndices(State& s, Rng& rng) {
       static_cast<std::uint32_t>((bits >> (64 - 3 * kTableIndexBits)) & kTableIndexMask);
 }
 
-std::uint32_t SpectralWalk::takeTableIndex(State& s, Rng& rng) {
+inline std::uint32_t SpectralWalk::takeTableIndex(State& s, Rng& rng) {
   if (s.pendingCount == 0) drawTableIndices(s, rng);
   return s.pendingIndex[--s.pendingCount];
 }
