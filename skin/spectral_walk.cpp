@@ -37,17 +37,6 @@ double sampleFreePathCm(double mu_perCm, double inverseMuCm, Rng& rng) {
   return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) * inverseMuCm : kInfinity;
 }
 
-/// crossPlaneInterfaceZ (skin/interface_crossing.h) through a precomputed index pair: the
-/// Fresnel test with one division instead of three, the same law.
-InterfaceCrossing crossPlaneInterfaceZ(const Vec3& d, const FresnelPair& pair, Rng& rng) {
-  if (pair.matched()) return {d, true};
-  double cosTransmitted = 0;
-  const double reflectance = pair.reflectance(d.z, cosTransmitted);
-  if (reflectance >= 1.0 || rng.uniform() < reflectance) return {{d.x, d.y, -d.z}, false};
-  const double ratio = pair.ratio();
-  return {{d.x * ratio, d.y * ratio, std::copysign(cosTransmitted, d.z)}, true};
-}
-
 bool sameRatio(double a, double b) { return std::fabs(a - b) <= kRatioTolerance * std::fabs(b); }
 
 void requireShared(bool same, const std::string& what) {
@@ -140,21 +129,12 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     if (index(layer) > index(options.deepestLayer)) break;
     const LayerOptics& lo = first[layer];
     if (!(lo.thicknessCm > 0)) continue;
-    Slab slab{layer,
-              depthCm,
-              depthCm + lo.thicknessCm,
-              lo.refractiveIndex,
-              options.melanosomes ? lo.melanosome.mu_perCm : 0.0,
-              false,
-              {},
-              {},
-              {},
-              0.0,
-              0.0,
-              kInfinity,
-              {},
-              {},
-              {}};
+    Slab slab;
+    slab.layer = layer;
+    slab.topCm = depthCm;
+    slab.bottomCm = depthCm + lo.thicknessCm;
+    slab.referenceIndex = lo.refractiveIndex;
+    slab.muMelanosome_perCm = options.melanosomes ? lo.melanosome.mu_perCm : 0.0;
     for (const SkinOptics& o : bundle) {
       requireShared(o[layer].thicknessCm == lo.thicknessCm, "the thickness of " + layerText(layer));
       requireShared(

@@ -31,6 +31,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -139,19 +140,19 @@ class SpectralWalk {
 
  private:
   struct Slab {
-    Layer layer;
-    double topCm, bottomCm;
-    double referenceIndex;          ///< the index at the first wavelength (ratios are λ-free)
-    double muMelanosome_perCm;      ///< Eq. 6 (λ-free)
-    bool hasRayleigh;               ///< some λ has a Rayleigh coefficient here
+    Layer layer = Layer::StratumCorneum;
+    double topCm = 0, bottomCm = 0;
+    double referenceIndex = 1;      ///< the index at the first wavelength (ratios are λ-free)
+    double muMelanosome_perCm = 0;  ///< Eq. 6 (λ-free)
+    bool hasRayleigh = false;       ///< some λ has a Rayleigh coefficient here
     std::vector<double> muA_perCm;  ///< per λ
     std::vector<double> muRayleigh_perCm;  ///< per λ (empty without Rayleigh)
     std::vector<double> logRayleigh;       ///< per λ: log muRayleigh_perCm
-    double leastMuA_perCm;                 ///< min over λ of muA_perCm
-    double largestMuA_perCm;               ///< max over λ of muA_perCm
+    double leastMuA_perCm = 0;             ///< min over λ of muA_perCm
+    double largestMuA_perCm = 0;           ///< max over λ of muA_perCm
     /// 1/μ of the free paths (a multiply per event instead of a division): melanosomes alone,
     /// and per hero with Rayleigh (empty without Rayleigh); +∞ where μ = 0 (not used there).
-    double inverseMuMelanosomeCm;
+    double inverseMuMelanosomeCm = std::numeric_limits<double>::infinity();
     std::vector<double> inverseMuScatterCm;
     /// The crossings into the next deeper and shallower slab (precomputed ratios; unused at the
     /// stack's ends).

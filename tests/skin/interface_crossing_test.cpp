@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "skin/fresnel.h"
 #include "skin/interface_crossing.h"
@@ -88,6 +89,27 @@ TEST(InterfaceCrossingTest, GeneralNormalAgreesWithThePlaneZVersion) {
       EXPECT_NEAR(z.direction.x, g.direction.x, 1e-15);
       EXPECT_NEAR(z.direction.y, g.direction.y, 1e-15);
       EXPECT_NEAR(z.direction.z, g.direction.z, 1e-15);
+    }
+  }
+}
+
+TEST(InterfaceCrossingTest, PrecomputedIndexPairCrossesAsTheIndices) {
+  // The FresnelPair overload (the spectral walk's layer interfaces): the same decision, random
+  // numbers and direction to rounding, for matched, refracting and totally reflecting pairs.
+  for (const auto& [n1, n2] : {std::pair{1.37, 1.37}, {1.34, 1.5}, {1.5, 1.34}, {1.5, 1.0}}) {
+    const FresnelPair pair(n1, n2);
+    for (int k = 0; k < 200; ++k) {
+      const double z = (k % 2 == 0 ? 1.0 : -1.0) * (0.005 + 0.99 * k / 200.0);
+      const double r = std::sqrt(1.0 - z * z);
+      const Vec3 d{0.6 * r, 0.8 * r, z};
+      Rng a(k), b(k);
+      const InterfaceCrossing byIndices = crossPlaneInterfaceZ(d, n1, n2, a);
+      const InterfaceCrossing byPair = crossPlaneInterfaceZ(d, pair, b);
+      EXPECT_EQ(byPair.transmitted, byIndices.transmitted) << n1 << " -> " << n2 << ", z " << z;
+      EXPECT_NEAR(byPair.direction.x, byIndices.direction.x, 1e-14);
+      EXPECT_NEAR(byPair.direction.y, byIndices.direction.y, 1e-14);
+      EXPECT_NEAR(byPair.direction.z, byIndices.direction.z, 1e-14);
+      EXPECT_TRUE(sameState(a, b));
     }
   }
 }
