@@ -27,9 +27,9 @@ class SkinTableCache {
  public:
   static constexpr int kTableMelaninLevels = 9;
   /// The settings the renderer builds its tables with (K = 12 cosine bins, N = 10 000 rays per
-  /// bin: a table's sampling error, 1–2 % of P(subsurface) per bin and a few tenths of a percent
-  /// over a render's bins, is a fixed bias far below its per-pixel noise; docs/interpretations.md,
-  /// "Render tables").
+  /// bin by default: a table's sampling error, 1–2 % of P(subsurface) per bin, is a fixed bias of
+  /// the render: a few tenths of a percent where many bins share the image, up to ≈ 3 % per
+  /// channel under a narrow light facing the camera; docs/interpretations.md, "Render tables").
   /// `raysPerBin`: the scene's integrator.table_rays_per_bin (IntegratorDesc).
   static skin::ExitTableSettings renderSettings(
       std::uint64_t raysPerBin = kDefaultRenderRaysPerBin);
