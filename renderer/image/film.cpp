@@ -79,6 +79,10 @@ std::size_t Film::sampleChannel(double u) const {
 
 void Film::addSample(int x, int y, std::size_t channel, double radiance, bool odd) {
   requireInside("Film::addSample", x, y, channel, width_, height_, channels_.size());
+  accumulate(x, y, channel, radiance, odd);
+}
+
+void Film::accumulate(int x, int y, std::size_t channel, double radiance, bool odd) {
   if (!std::isfinite(radiance)) {
     throw std::invalid_argument("Film::addSample: non-finite radiance " + std::to_string(radiance) +
                                 " at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
@@ -98,17 +102,9 @@ void Film::addBandSample(int x, int y, std::size_t band, const double* radiance,
     throw std::logic_error("Film::addBandSample on a film filled one channel per sample");
   const std::vector<std::size_t>& channels = bandChannels_.at(band);
   if (channels.empty()) return;
+  // The band's channels exist: the pixel is checked once, not once per channel.
   requireInside("Film::addBandSample", x, y, channels.front(), width_, height_, channels_.size());
-  for (std::size_t i = 0; i < channels.size(); ++i) {  // the band's channels exist: checked once
-    if (!std::isfinite(radiance[i])) addSample(x, y, channels[i], radiance[i], odd);  // throws
-    const std::size_t s = slot(x, y, channels[i]);
-    sums_[s] += radiance[i];
-    counts_[s] += 1;
-    if (odd) {
-      oddSums_[s] += radiance[i];
-      oddCounts_[s] += 1;
-    }
-  }
+  for (std::size_t i = 0; i < channels.size(); ++i) accumulate(x, y, channels[i], radiance[i], odd);
 }
 
 double Film::value(int x, int y, std::size_t channel) const {

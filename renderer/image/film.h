@@ -87,6 +87,8 @@ class Film {
   template <class Sum, class Count>
   double meanOrInterpolated(int x, int y, std::size_t channel, const Sum& sum,
                             const Count& count) const;
+  /// Adds one sample to a checked pixel and channel; throws for a non-finite radiance.
+  void accumulate(int x, int y, std::size_t channel, double radiance, bool odd);
   std::size_t slot(int x, int y, std::size_t channel) const {
     return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
             static_cast<std::size_t>(x)) *
