@@ -161,8 +161,8 @@ void SkinTally::appendBytes(std::string& bytes) const {
 SkinTally SkinTally::fromBytes(const TallyOptions& options, const std::string& bytes,
                                std::size_t& offset) {
   SkinTally t(options);
-  for (RunningStatistic* s : {&t.total_, &t.surface_, &t.subsurface_, &t.transmitted_,
-                              &t.absorbed_, &t.melanosomeAbsorbed_, &t.eventLimited_})
+  for (RunningStatistic* s : {&t.total_, &t.surface_, &t.subsurface_, &t.transmitted_, &t.absorbed_,
+                              &t.melanosomeAbsorbed_, &t.eventLimited_})
     *s = takeStatistic(bytes, offset);
   for (RunningStatistic& s : t.absorbedByLayer_) s = takeStatistic(bytes, offset);
   t.events_ = take<std::uint64_t>(bytes, offset);

@@ -136,6 +136,10 @@ struct ShapeDesc {
   SourceLocation where;
 };
 
+/// The render tables' rays per cosine bin unless a scene sets integrator.table_rays_per_bin:
+/// 1–2 % sampling error of P(subsurface) per bin (SkinTableCache::renderSettings).
+inline constexpr std::uint64_t kDefaultTableRaysPerBin = 10000;
+
 struct IntegratorDesc {
   int maxDepth = 8;
   std::uint64_t seed = 1;
@@ -156,7 +160,7 @@ struct IntegratorDesc {
   bool exitControlVariate = true;
   /// Table mode: rays per cosine bin of every exit table (renderer/tracing/skin_table_cache.h);
   /// a table's sampling error, a fixed bias of the render, falls as 1/√rays.
-  std::uint64_t tableRaysPerBin = 10000;
+  std::uint64_t tableRaysPerBin = kDefaultTableRaysPerBin;
   SourceLocation where;
 };
 

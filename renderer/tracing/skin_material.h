@@ -113,7 +113,7 @@ class SkinMaterial {
                skin::SkinMode skinMode = skin::SkinMode::Walk,
                double effectTolerance = skin::kDefaultEffectTolerance,  ///< ε, skin/effect_plan.h
                const std::vector<std::vector<std::size_t>>& bundles = {},
-               std::uint64_t tableRaysPerBin = SkinTableCache::kDefaultRenderRaysPerBin);
+               std::uint64_t tableRaysPerBin = kDefaultTableRaysPerBin);
 
   /// Melanin multiplier at a hit: melanin map (by uv) × freckles (by position in cm).
   double melaninMultiplier(const SurfaceHit& hit) const;

@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "renderer/scene/scene.h"
 #include "renderer/tracing/exit_table_cache.h"
 #include "renderer/tracing/skin_walk_cache.h"
 #include "skin/exit_table.h"
@@ -31,9 +32,7 @@ class SkinTableCache {
   /// the render: a few tenths of a percent where many bins share the image, up to ≈ 3 % per
   /// channel under a narrow light facing the camera; docs/interpretations.md, "Render tables").
   /// `raysPerBin`: the scene's integrator.table_rays_per_bin (IntegratorDesc).
-  static skin::ExitTableSettings renderSettings(
-      std::uint64_t raysPerBin = kDefaultRenderRaysPerBin);
-  static constexpr std::uint64_t kDefaultRenderRaysPerBin = 10000;
+  static skin::ExitTableSettings renderSettings(std::uint64_t raysPerBin = kDefaultTableRaysPerBin);
   /// The settings of a reflectance curve's tables (`spectrum --skin-model table`, Python): K = 12,
   /// N = 40 000 rays per bin, since a curve has no per-pixel noise to hide a table's error in.
   static skin::ExitTableSettings curveSettings();

@@ -53,7 +53,8 @@ void expectAgree(const std::string& what, Estimate analog, Estimate spectral,
   double analogError = analog.standardError;
   if (binomialRays > 1) {
     const double p = std::clamp(std::max(analog.mean, spectral.mean), 0.0, 1.0);
-    analogError = std::max(analogError, std::sqrt(p * (1 - p) / (static_cast<double>(binomialRays) - 1.0)));
+    analogError =
+        std::max(analogError, std::sqrt(p * (1 - p) / (static_cast<double>(binomialRays) - 1.0)));
   }
   const double sigma = std::hypot(analogError, spectral.standardError);
   EXPECT_LT(std::fabs(analog.mean - spectral.mean), 4 * sigma + 1e-12)
@@ -90,9 +91,10 @@ void expectBundleAgrees(const std::vector<SkinWalk>& walks, const ExitTableSetti
                       a.absorbedByLayer[index(layer)], s.absorbedByLayer[index(layer)], n);
         expectAgree(at + "mean exit radius", a.meanExitRadiusCm, s.meanExitRadiusCm);
         const double total = s.subsurface.mean + s.transmitted.mean + s.absorbed.mean;
-        EXPECT_NEAR(total, 1.0, 4 * std::hypot(s.subsurface.standardError, s.absorbed.standardError,
-                                               s.transmitted.standardError) +
-                                    0.01)
+        EXPECT_NEAR(total, 1.0,
+                    4 * std::hypot(s.subsurface.standardError, s.absorbed.standardError,
+                                   s.transmitted.standardError) +
+                        0.01)
             << at << "the outcomes' weights sum to 1 in expectation";
       }
     }
@@ -105,8 +107,8 @@ void expectBundleAgrees(const std::vector<SkinWalk>& walks, const ExitTableSetti
 // 20 wavelengths over 250–2500 nm, including the ones issue 11 names; 3 bins × 6000 rays each.
 TEST(SpectralExitTable, AgreesWithAnalogTablesOverTheSpectrum) {
   std::vector<SkinWalk> walks;
-  for (double nm : {250.0, 300.0, 365.0, 400.0, 450.0, 500.0, 550.0, 600.0, 650.0, 700.0, 780.0,
-                    900.0, 1100.0, 1300.0, 1400.0, 1450.0, 1650.0, 1940.0, 2200.0, 2500.0})
+  for (double nm : {250.0, 300.0, 365.0,  400.0,  450.0,  500.0,  550.0,  600.0,  650.0,  700.0,
+                    780.0, 900.0, 1100.0, 1300.0, 1400.0, 1450.0, 1650.0, 1940.0, 2200.0, 2500.0})
     walks.emplace_back(s1(nm));
   expectBundleAgrees(walks, smallSettings(6000));
 }
