@@ -148,8 +148,6 @@ TEST(SpectralWeights, ExponentialsAreExpWithinThreeUlp) {
 // ---- addRefractionDensities against Snell's law and Walter et al. 2007 ----
 
 namespace {
-Vec3 unit(const Vec3& v) { return v * (1.0 / std::sqrt(dot(v, v))); }
-
 struct RefractionCase {
   bool fromInside;
   double heroIndex;
@@ -166,7 +164,7 @@ double expectedLogDensity(const Vec3& d, const Vec3& t, const Vec3& macro, doubl
   Vec3 h = d * n1 - t * n2;
   logTransmitted = 0;
   if (dot(h, h) == 0) return -INFINITY;
-  h = unit(h);
+  h = normalize(h);
   if (dot(d, h) > 0) h = h * -1.0;
   const double cosD = dot(d, h), cosT = dot(t, h), cosFacet = dot(h, macro);
   const FresnelResult f = fresnel(cosD, n1, n2);
@@ -194,8 +192,8 @@ TEST(SpectralWeights, RefractionDensitiesUseEachIndexsOwnFacet) {
     // the ray; into the skin is +z.
     const double heading = c.fromInside ? -1.0 : 1.0;
     const Vec3 macro{0, 0, -heading};
-    const Vec3 d = unit({0.35, -0.2, heading});
-    const Vec3 m = unit({-0.3, 0.1, -heading});
+    const Vec3 d = normalize({0.35, -0.2, heading});
+    const Vec3 m = normalize({-0.3, 0.1, -heading});
     const double n1 = c.fromInside ? c.heroIndex : 1.0, n2 = c.fromInside ? 1.0 : c.heroIndex;
     const FresnelResult hero = fresnel(dot(d, m), n1, n2);
     ASSERT_LT(hero.reflectance, 1.0);
