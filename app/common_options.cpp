@@ -1,6 +1,7 @@
 #include "app/common_options.h"
 
 #include "app/option_checks.h"
+#include "skin/spectral_database.h"
 
 namespace hylios {
 
@@ -12,8 +13,8 @@ CLI::Option* addRaysOption(CLI::App& command, std::uint64_t& rays, const std::st
 }
 
 CLI::Option* addWavelengthOption(CLI::App& command, double& wavelengthNm) {
-  return command.add_option("--wavelength", wavelengthNm, "Wavelength, nm")
-      ->check(finiteRange(0, 1e6))
+  return command.add_option("--wavelength", wavelengthNm, "Wavelength, nm (250–2500)")
+      ->check(finiteRange(skin::kModelMinWavelengthNm, skin::kModelMaxWavelengthNm))
       ->capture_default_str();
 }
 

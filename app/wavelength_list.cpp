@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "skin/spectral_database.h"
+
 namespace hylios {
 namespace {
 
@@ -66,13 +68,25 @@ std::vector<double> parseRange(const std::string& text) {
   return wavelengths;
 }
 
+/// Every wavelength inside the model's domain; the first outside is named.
+void requireModelDomain(const std::string& text, const std::vector<double>& wavelengths) {
+  for (double w : wavelengths)
+    if (!(w >= skin::kModelMinWavelengthNm && w <= skin::kModelMaxWavelengthNm))
+      fail(text, fmt::format("{} nm is outside the model's range {}–{} nm", w,
+                             skin::kModelMinWavelengthNm, skin::kModelMaxWavelengthNm));
+}
+
 }  // namespace
 
 std::vector<double> parseWavelengthList(const std::string& text) {
   if (text.empty()) fail(text, "no wavelengths given");
-  if (text.find(':') != std::string::npos) return parseRange(text);
   std::vector<double> wavelengths;
-  for (const auto& token : split(text, ',')) wavelengths.push_back(parseNumber(text, token));
+  if (text.find(':') != std::string::npos) {
+    wavelengths = parseRange(text);
+  } else {
+    for (const auto& token : split(text, ',')) wavelengths.push_back(parseNumber(text, token));
+  }
+  requireModelDomain(text, wavelengths);
   return wavelengths;
 }
 

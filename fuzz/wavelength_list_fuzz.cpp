@@ -1,7 +1,6 @@
 // libFuzzer harness: parseWavelengthList (`--wavelengths`) on arbitrary bytes. Bad input must
-// throw a std::exception; an accepted list is non-empty, at most a million entries, finite and
-// > 0, and a start:stop:step range strictly ascends.
-#include <cmath>
+// throw a std::exception; an accepted list is non-empty, at most a million entries, inside the
+// model's 250–2500 nm, and a start:stop:step range strictly ascends.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -10,6 +9,7 @@
 
 #include "app/wavelength_list.h"
 #include "fuzz/fuzz_check.h"
+#include "skin/spectral_database.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace hylios;
@@ -21,7 +21,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   fuzz::require(!wavelengths.empty() && wavelengths.size() <= 1000000,
                 "between 1 and a million wavelengths");
-  for (double w : wavelengths) fuzz::require(std::isfinite(w) && w > 0, "finite and > 0 nm");
+  for (double w : wavelengths)
+    fuzz::require(w >= skin::kModelMinWavelengthNm && w <= skin::kModelMaxWavelengthNm,
+                  "inside the model's 250–2500 nm");
   // A start:stop:step range is a grid: its wavelengths must strictly ascend (no repeats).
   const bool isRange = std::memchr(data, ':', size) != nullptr;
   for (std::size_t i = 1; isRange && i < wavelengths.size(); ++i)

@@ -14,6 +14,12 @@
 
 namespace hylios::skin {
 
+/// The model's spectral domain, 250–2500 nm (the paper's title and Sec. 5): the wavelengths every
+/// absorber and water's index cover (docs/interpretations.md, "Model domain"). Inputs are checked
+/// against it where they are read (the command line, scene files), so the error names the input.
+inline constexpr double kModelMinWavelengthNm = 250.0;
+inline constexpr double kModelMaxWavelengthNm = 2500.0;
+
 class SpectralDataError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

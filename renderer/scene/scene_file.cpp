@@ -18,6 +18,7 @@
 #include "renderer/scene/scene_spectrum_reader.h"
 #include "renderer/scene/toml_table_reader.h"
 #include "skin/core/toml_location.h"
+#include "skin/spectral_database.h"
 
 namespace hylios {
 
@@ -60,7 +61,8 @@ constexpr std::int64_t kMaxResolution = kMaxFilmSide;
 constexpr std::int64_t kMaxPixels = kMaxFilmPixels;
 constexpr std::int64_t kMaxSamplesPerPixel = 1000000;
 constexpr std::size_t kMaxChannelsPerBand = 2251;  // 250–2500 nm at 1 nm
-const NumberRange kSpectralNm = NumberRange::closed(250, 2500);
+const NumberRange kSpectralNm =
+    NumberRange::closed(skin::kModelMinWavelengthNm, skin::kModelMaxWavelengthNm);
 const NumberRange kPercent = NumberRange::closed(0, 100);
 // One scene unit is between 10 nm and 10 km: the skin walk's offsets (cm) divided by unit_cm stay
 // within the scene extent limit (kMaxSceneCoordinate).

@@ -57,7 +57,9 @@ TEST(SpectrumCommand, BadArgumentsAreClearErrorsAndWriteNothing) {
         {"--specimen", "S1", "--wavelengths", "200", "--rays", "10", "--out", out.string()});
     FAIL() << "200 nm accepted";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("200 nm is outside"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--wavelengths '200': 200 nm is outside the model's range"),
+              std::string::npos)
+        << e.what();
   }
   try {
     runSpectrum({"--specimen", "S9", "--rays", "10", "--out", out.string()});

@@ -46,3 +46,11 @@ TEST(WavelengthList, ErrorsNameTheProblem) {
   // 1.1e-13 apart), so the range would list the same wavelength twice.
   expectError("1000:1000.000000000001:1e-13", "step is too small to separate wavelengths");
 }
+
+TEST(WavelengthList, RefusesWavelengthsOutsideTheModelNamingTheOption) {
+  expectError("2600", "--wavelengths '2600': 2600 nm is outside the model's range 250–2500 nm");
+  expectError("365,249.5,550", "249.5 nm is outside the model's range");
+  expectError("250:2600:5", "--wavelengths '250:2600:5': 2505 nm is outside");
+  expectError("100:300:50", "100 nm is outside");
+  EXPECT_EQ(parseWavelengthList("250,2500").size(), 2u);  // the domain's ends are inside
+}
