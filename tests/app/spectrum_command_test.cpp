@@ -57,8 +57,9 @@ TEST(SpectrumCommand, BadArgumentsAreClearErrorsAndWriteNothing) {
         {"--specimen", "S1", "--wavelengths", "200", "--rays", "10", "--out", out.string()});
     FAIL() << "200 nm accepted";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("--wavelengths '200': 200 nm is outside the model's range"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("--wavelengths '200': 200 nm is outside the model's range"),
+        std::string::npos)
         << e.what();
   }
   try {
