@@ -240,19 +240,32 @@ void ExitTable::tally(Bin& bin, const SkinPath& path) const {
   }
 }
 
-void ExitTable::tally(Bin& bin, const SpectralPath& path, std::size_t member) const {
+ExitTable::PathCells ExitTable::cellsOf(const SpectralPath& path) const {
+  PathCells cells;
+  if (path.end == PathEnd::SubsurfaceReflection) {
+    cells.radiusCm = std::hypot(path.exitOffsetXCm, path.exitOffsetYCm);
+    cells.offset = offsetCell(path.exitOffsetXCm, path.exitOffsetYCm);
+    cells.polar = polarBin(-path.exitDirection.z, settings_.polarBins);
+  } else if (path.end == PathEnd::Transmitted && path.transmittedDirection.empty()) {
+    cells.polar = polarBin(path.exitDirection.z, settings_.polarBins);
+  }
+  return cells;
+}
+
+void ExitTable::tally(Bin& bin, const SpectralPath& path, std::size_t member,
+                      const PathCells& cells) const {
   ++bin.rays;
   const double exit = path.exitWeight[member];
   switch (path.end) {
     case PathEnd::SubsurfaceReflection:
-      bin.addSubsurface(exit, std::hypot(path.exitOffsetXCm, path.exitOffsetYCm),
-                        offsetCell(path.exitOffsetXCm, path.exitOffsetYCm),
-                        polarBin(-path.exitDirection.z, settings_.polarBins));
+      bin.addSubsurface(exit, cells.radiusCm, cells.offset, cells.polar);
       break;
-    case PathEnd::Transmitted: {
-      const Vec3& d = path.transmittedDirection.empty() ? path.exitDirection
-                                                        : path.transmittedDirection[member];
-      bin.addTransmitted(exit, polarBin(d.z, settings_.polarBins));
+    case PathEnd::Transmitted: {  // per-λ directions where the bottom refracts each λ elsewhere
+      const std::size_t polar =
+          path.transmittedDirection.empty()
+              ? cells.polar
+              : polarBin(path.transmittedDirection[member].z, settings_.polarBins);
+      bin.addTransmitted(exit, polar);
       break;
     }
     case PathEnd::EventLimit:
@@ -329,8 +342,9 @@ std::vector<ExitTable> ExitTable::buildBundle(const std::vector<const SkinWalk*>
       for (std::uint64_t i = c * kChunkRays; i < last; ++i) {
         Rng rng(settings.seed, static_cast<std::uint64_t>(k), i);
         spectral.traceEntered(direction, rng, path);
+        const PathCells cells = tables[0].cellsOf(path);  // the members share their settings
         for (std::size_t m = 0; m < members; ++m)
-          tables[m].tally(partials[c * members + m], path, m);
+          tables[m].tally(partials[c * members + m], path, m, cells);
       }
     });
     for (std::size_t m = 0; m < members; ++m) {

@@ -176,7 +176,15 @@ class ExitTable {
   static std::optional<ExitTable> readWithKey(const std::filesystem::path& path, ExitTable table,
                                               std::string* whyNot);
   void tally(Bin& bin, const SkinPath& path) const;
-  void tally(Bin& bin, const SpectralPath& path, std::size_t member) const;
+  /// Where a spectral path lands in a bin's histograms: the same for every member of its bundle
+  /// (the path's geometry is shared), so buildBundle computes it once per path.
+  struct PathCells {
+    double radiusCm = 0;
+    std::size_t offset = 0;  ///< offsetCell of the exit offset (subsurface exits)
+    std::size_t polar = 0;   ///< the exit (or shared transmitted) direction's polar bin
+  };
+  PathCells cellsOf(const SpectralPath& path) const;
+  void tally(Bin& bin, const SpectralPath& path, std::size_t member, const PathCells& cells) const;
   std::size_t offsetCell(double offsetXCm, double offsetYCm) const;
   int radialCell(double radiusCm) const;
   SkinPath sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng) const;
