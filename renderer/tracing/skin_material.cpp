@@ -25,30 +25,41 @@ double facetDensityPerSr(double s, double cosTheta) {
   return skin::surfaceNormalPolarDensity(s, t) / (2 * kPi * std::sin(t));
 }
 
-/// Over facets drawn from P_s for a ray at cosθ_i (stratified quadrature): the probability that a
-/// facet faces the ray (P_f, the walk's redraw test) and that it faces the ray and mirrors it out
-/// of the surface (N). Local frame: the ray travels along +z into the surface, the macro normal
-/// is −z.
+/// The stratified facet normals drawn from P_s (kLobeTableStrata polar strata × as many azimuths),
+/// in the local frame where the macro normal is −z; the same for every table entry, so drawn once
+/// (each polar inversion is a Newton solve).
+std::vector<skin::Vec3> stratifiedFacetNormals(double s) {
+  std::vector<skin::Vec3> normals;
+  normals.reserve(static_cast<std::size_t>(kLobeTableStrata) * kLobeTableStrata);
+  for (int i = 0; i < kLobeTableStrata; ++i) {
+    const double theta = skin::sampleSurfaceNormalPolar(s, (i + 0.5) / kLobeTableStrata);
+    const double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
+    for (int j = 0; j < kLobeTableStrata; ++j) {
+      const double phi = 2 * kPi * (j + 0.5) / kLobeTableStrata;
+      normals.push_back({sinTheta * std::cos(phi), sinTheta * std::sin(phi), -cosTheta});
+    }
+  }
+  return normals;
+}
+
+/// Over facets drawn from P_s for a ray at cosθ_i (stratified quadrature over `normals`): the
+/// probability that a facet faces the ray (P_f, the walk's redraw test) and that it faces the ray
+/// and mirrors it out of the surface (N). Local frame: the ray travels along +z into the surface.
 struct FacetFractions {
   double facing = 0, leaving = 0;
 };
-FacetFractions facetFractions(double s, double cosIncident) {
+FacetFractions facetFractions(const std::vector<skin::Vec3>& normals, double cosIncident) {
   const double sinIncident = std::sqrt(std::max(0.0, 1 - cosIncident * cosIncident));
   const skin::Vec3 d{sinIncident, 0, cosIncident};
   int facing = 0, leaving = 0;
-  for (int i = 0; i < kLobeTableStrata; ++i)
-    for (int j = 0; j < kLobeTableStrata; ++j) {
-      const double theta = skin::sampleSurfaceNormalPolar(s, (i + 0.5) / kLobeTableStrata);
-      const double phi = 2 * kPi * (j + 0.5) / kLobeTableStrata;
-      const skin::Vec3 m{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                         -std::cos(theta)};
-      const double dm = skin::dot(d, m);
-      if (!(dm < 0)) continue;
-      ++facing;
-      const skin::Vec3 out = d - m * (2 * dm);
-      if (out.z < 0) ++leaving;
-    }
-  const double n = kLobeTableStrata * kLobeTableStrata;
+  for (const skin::Vec3& m : normals) {
+    const double dm = skin::dot(d, m);
+    if (!(dm < 0)) continue;
+    ++facing;
+    const skin::Vec3 out = d - m * (2 * dm);
+    if (out.z < 0) ++leaving;
+  }
+  const double n = static_cast<double>(normals.size());
   return {facing / n, leaving / n};
 }
 
@@ -119,9 +130,10 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
         for (std::size_t channel : bundles[b]) members.push_back(&tables_->table(channel, level));
         tableBundles_.emplace_back(walks_->spectralWalk(b, level), std::move(members));
       }
+  const std::vector<skin::Vec3> facetNormals = stratifiedFacetNormals(aspectRatio_);
   for (int i = 0; i < kLobeTableSize; ++i) {
     const double cosine = static_cast<double>(i) / (kLobeTableSize - 1);
-    const FacetFractions f = facetFractions(aspectRatio_, cosine);
+    const FacetFractions f = facetFractions(facetNormals, cosine);
     lobeNormalisation_.push_back(f.leaving);
     facetFacing_.push_back(f.facing);
   }
