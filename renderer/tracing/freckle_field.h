@@ -30,6 +30,10 @@ class FreckleField {
   double maxMultiplier() const;
 
  private:
+  /// The largest (1 − (d/r)²)² among the freckles of grid cell (ix, iy, iz) covering the point.
+  double strongestInCell(std::int64_t ix, std::int64_t iy, std::int64_t iz,
+                         const glm::dvec3& pointCm) const;
+
   double densityPerCm2_, radiusCm_, gain_;
   std::uint64_t seed_;
   double cellCm_;
