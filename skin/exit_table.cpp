@@ -189,14 +189,19 @@ int ExitTable::radialCell(double radiusCm) const {
   return 1 + std::clamp(static_cast<int>(x), 0, settings_.radialBins - 1);  // rounding at edges
 }
 
-std::size_t ExitTable::offsetCell(double offsetXCm, double offsetYCm) const {
+ExitTable::PathCells ExitTable::subsurfaceCells(double offsetXCm, double offsetYCm,
+                                                const Vec3& exitDirection) const {
+  PathCells cells;
   const double r = std::hypot(offsetXCm, offsetYCm);
+  cells.radiusCm = r;
   // Entry direction has azimuth 0 (x axis): the offset's azimuth from it, folded to [0, π].
   const double phi = r > 0 ? std::atan2(std::fabs(offsetYCm), offsetXCm) : 0.0;
   const int a = std::clamp(static_cast<int>(phi / kPi * settings_.offsetAzimuthBins), 0,
                            settings_.offsetAzimuthBins - 1);
-  return static_cast<std::size_t>(radialCell(r)) * settings_.offsetAzimuthBins +
-         static_cast<std::size_t>(a);
+  cells.offset = static_cast<std::size_t>(radialCell(r)) * settings_.offsetAzimuthBins +
+                 static_cast<std::size_t>(a);
+  cells.polar = polarBin(-exitDirection.z, settings_.polarBins);
+  return cells;
 }
 
 double ExitTable::radialCellLowerCm(int cell) const {
@@ -216,11 +221,12 @@ double ExitTable::radialCellUpperCm(int bin, int cell) const {
 void ExitTable::tally(Bin& bin, const SkinPath& path) const {
   ++bin.rays;
   switch (path.end) {
-    case PathEnd::SubsurfaceReflection:
-      bin.addSubsurface(1, std::hypot(path.exitOffsetXCm, path.exitOffsetYCm),
-                        offsetCell(path.exitOffsetXCm, path.exitOffsetYCm),
-                        polarBin(-path.exitDirection.z, settings_.polarBins));
+    case PathEnd::SubsurfaceReflection: {
+      const PathCells cells =
+          subsurfaceCells(path.exitOffsetXCm, path.exitOffsetYCm, path.exitDirection);
+      bin.addSubsurface(1, cells.radiusCm, cells.offset, cells.polar);
       break;
+    }
     case PathEnd::Transmitted:
       bin.addTransmitted(1, polarBin(path.exitDirection.z, settings_.polarBins));
       break;
@@ -241,12 +247,10 @@ void ExitTable::tally(Bin& bin, const SkinPath& path) const {
 }
 
 ExitTable::PathCells ExitTable::cellsOf(const SpectralPath& path) const {
+  if (path.end == PathEnd::SubsurfaceReflection)
+    return subsurfaceCells(path.exitOffsetXCm, path.exitOffsetYCm, path.exitDirection);
   PathCells cells;
-  if (path.end == PathEnd::SubsurfaceReflection) {
-    cells.radiusCm = std::hypot(path.exitOffsetXCm, path.exitOffsetYCm);
-    cells.offset = offsetCell(path.exitOffsetXCm, path.exitOffsetYCm);
-    cells.polar = polarBin(-path.exitDirection.z, settings_.polarBins);
-  } else if (path.end == PathEnd::Transmitted && path.transmittedDirection.empty()) {
+  if (path.end == PathEnd::Transmitted && path.transmittedDirection.empty()) {
     cells.polar = polarBin(path.exitDirection.z, settings_.polarBins);
   }
   return cells;

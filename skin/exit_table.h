@@ -185,7 +185,9 @@ class ExitTable {
   };
   PathCells cellsOf(const SpectralPath& path) const;
   void tally(Bin& bin, const SpectralPath& path, std::size_t member, const PathCells& cells) const;
-  std::size_t offsetCell(double offsetXCm, double offsetYCm) const;
+  /// A subsurface exit's cells: its radius, its offset cell (radial cell × the offset's azimuth
+  /// from the entry's, folded to [0, π]) and the exit direction's polar bin.
+  PathCells subsurfaceCells(double offsetXCm, double offsetYCm, const Vec3& exitDirection) const;
   int radialCell(double radiusCm) const;
   SkinPath sampleBin(const Bin& bin, const Vec3& transmitted, Rng& rng) const;
   /// The bin a ray entered along a direction of this cosine uses: the nearer centres' linear
