@@ -26,7 +26,7 @@ namespace hylios {
 
 class SkinTableCache {
  public:
-  static constexpr int kTableMelaninLevels = 9;
+  static constexpr int kTableMelaninLevels = 7;
   /// The settings the renderer builds its tables with (K = 12 cosine bins, N = 10 000 rays per
   /// bin by default: a table's sampling error, 1–2 % of P(subsurface) per bin, is a fixed bias of
   /// the render: a few tenths of a percent where many bins share the image, up to ≈ 3 % per

@@ -52,6 +52,11 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
     throw SceneError(where, "melanin levels must be at least 2, got " + std::to_string(levels));
   if (!(lo_ >= 0) || !std::isfinite(hi_))
     throw SceneError(where, "melanin multipliers must be finite and >= 0");
+  const double rootLo = std::sqrt(lo_), rootHi = std::sqrt(hi_);
+  for (int k = 0; k < levels_; ++k) {
+    const double root = levels_ == 1 ? rootLo : rootLo + (rootHi - rootLo) * k / (levels_ - 1);
+    levelMultipliers_.push_back(k == 0 ? lo_ : k == levels_ - 1 ? hi_ : root * root);
+  }
   std::vector<skin::Specimen> specimens;
   for (int k = 0; k < levels_; ++k) {
     specimens.push_back(scaleMelanin(specimen, levelMultiplier(k)));
@@ -127,14 +132,18 @@ const skin::SpectralWalk& SkinWalkCache::spectralWalk(std::size_t bundle, int le
 }
 
 double SkinWalkCache::levelMultiplier(int level) const {
-  return levels_ == 1 ? lo_ : lo_ + (hi_ - lo_) * level / (levels_ - 1);
+  return levelMultipliers_.at(static_cast<std::size_t>(level));
 }
 
 int SkinWalkCache::level(double multiplier, double u) const {
   if (levels_ == 1) return 0;
-  const double t = std::clamp((multiplier - lo_) / (hi_ - lo_), 0.0, 1.0) * (levels_ - 1);
-  const int below = std::min(static_cast<int>(t), levels_ - 1);
-  return (u < t - below) ? below + 1 : below;
+  const double m = std::clamp(multiplier, lo_, hi_);
+  const double rootLo = std::sqrt(lo_);
+  const double t = (std::sqrt(m) - rootLo) / (std::sqrt(hi_) - rootLo) * (levels_ - 1);
+  const int below = std::clamp(static_cast<int>(t), 0, levels_ - 2);
+  const double mBelow = levelMultipliers_[static_cast<std::size_t>(below)];
+  const double mAbove = levelMultipliers_[static_cast<std::size_t>(below) + 1];
+  return u < (m - mBelow) / (mAbove - mBelow) ? below + 1 : below;  // linear in m between them
 }
 
 std::string SkinWalkCache::explainEffectPlans() const {

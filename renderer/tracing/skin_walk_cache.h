@@ -5,11 +5,13 @@
 // materials the scene has.
 //
 // Melanin levels: the multiplier range [lo, hi] of the material (melanin map × freckles) is split
-// into kMelaninLevels equally spaced levels m_k = lo + k·(hi − lo)/(K − 1) (one level when lo =
-// hi). A multiplier m between m_k and m_{k+1} picks level k+1 with probability (m − m_k)/(m_{k+1} −
-// m_k) and level k otherwise (stochastic rounding with one uniform number). The expected
-// contribution is then the linear interpolation in m of the contributions at the two levels: no
-// banding, and an error of O((hi − lo)²/K²) in the curvature of the response only.
+// into K = kMelaninLevels levels equally spaced in √m, m_k = (√lo + k·(√hi − √lo)/(K − 1))² (one
+// level when lo = hi): the skin's response bends most at low melanin, where these levels are
+// closest (docs/interpretations.md, "Melanin levels in table mode"). A multiplier m between m_k and
+// m_{k+1} picks level k+1 with probability (m − m_k)/(m_{k+1} − m_k) and level k otherwise
+// (stochastic rounding with one uniform number). The expected contribution is then the linear
+// interpolation in m of the contributions at the two levels: no banding, and an error of
+// O((m_{k+1} − m_k)²) in the curvature of the response only.
 //
 // The melanin multiplier scales, in every layer, the melanosome volume fraction and the colloidal
 // melanin fraction (Table 1's two melanin contents) of the specimen.
@@ -77,6 +79,7 @@ class SkinWalkCache {
  private:
   double lo_, hi_;
   int levels_;
+  std::vector<double> levelMultipliers_;  ///< m_k, k = 0 … levels − 1
   std::size_t channels_;
   std::vector<std::optional<skin::SkinWalk>>
       walks_;                                   ///< [level * distinct wavelengths + distinct index]

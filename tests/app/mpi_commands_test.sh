@@ -74,7 +74,7 @@ case $case_name in
     same <(timeless one.exr) <(timeless two.exr)
     same one_nm550.png two_nm550.png
     # A noise target: rank 0 decides when to stop from the summed film, every rank stops there.
-    # (The walk, not the scene's exit tables: 369 of them would be built for these 576 pixels.)
+    # (The walk, not the scene's exit tables: 287 of them would be built for these 576 pixels.)
     visible=$HYLIOS_DATA_DIR/scenes/figure01_visible.toml
     "$hylios" render "$visible" --resolution 24x24 --spp 64 --noise-target 0.3 --skin-model walk \
       --out n1.exr

@@ -52,17 +52,23 @@ TEST(SkinWalkCache, StochasticRoundingIsUnbiasedInTheMultiplier) {
   ASSERT_EQ(cache.levels(), SkinWalkCache::kMelaninLevels);
   EXPECT_DOUBLE_EQ(cache.levelMultiplier(0), 1);
   EXPECT_DOUBLE_EQ(cache.levelMultiplier(32), 5);
-  // m = 2.3 lies between levels 10 (2.25) and 11 (2.375): level 11 with probability 0.4.
-  // N = 100000 draws: σ(mean multiplier) = 0.125·sqrt(0.24/N) ≈ 1.9e-4.
+  // Levels equally spaced in √m: m_k = (1 + k(√5 − 1)/32)², m_16 = ((1 + √5)/2)² = 2.618034.
+  EXPECT_NEAR(cache.levelMultiplier(16), 2.618034, 1e-6);
+  EXPECT_NEAR(cache.levelMultiplier(13), 2.256462, 1e-6);
+  EXPECT_NEAR(cache.levelMultiplier(14), 2.374002, 1e-6);
+  // m = 2.3 lies between levels 13 and 14: level 14 with probability (2.3 − m_13)/(m_14 − m_13)
+  // = 0.3704. N = 100000 draws: σ(mean multiplier) = 0.11754·sqrt(0.3704·0.6296/N) ≈ 1.8e-4.
   skin::Rng rng(4);
-  double mean = 0;
+  double mean = 0, upper = 0;
   const int n = 100000;
   for (int i = 0; i < n; ++i) {
     const int level = cache.level(2.3, rng.uniform());
-    ASSERT_TRUE(level == 10 || level == 11) << level;
+    ASSERT_TRUE(level == 13 || level == 14) << level;
     mean += cache.levelMultiplier(level) / n;
+    upper += level == 14 ? 1.0 / n : 0.0;
   }
-  EXPECT_NEAR(mean, 2.3, 4 * 1.9e-4);
+  EXPECT_NEAR(mean, 2.3, 4 * 1.8e-4);
+  EXPECT_NEAR(upper, 0.3704, 4 * 0.0015);  // binomial σ = sqrt(0.3704·0.6296/N) ≈ 0.0015
   EXPECT_EQ(cache.level(5, 0.999), 32);
   EXPECT_EQ(cache.level(1, 0.0), 0);
 }
