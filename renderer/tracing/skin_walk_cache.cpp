@@ -42,6 +42,8 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
                              const std::vector<std::vector<std::size_t>>& bundles)
     : lo_(std::min(minMultiplier, maxMultiplier)),
       hi_(std::max(minMultiplier, maxMultiplier)),
+      rootLo_(std::sqrt(lo_)),
+      rootHi_(std::sqrt(hi_)),
       levels_(hi_ > lo_ ? levels : 1),
       channels_(channelWavelengths.size()),
       effectTolerance_(effectTolerance) {
@@ -52,9 +54,8 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
     throw SceneError(where, "melanin levels must be at least 2, got " + std::to_string(levels));
   if (!(lo_ >= 0) || !std::isfinite(hi_))
     throw SceneError(where, "melanin multipliers must be finite and >= 0");
-  const double rootLo = std::sqrt(lo_), rootHi = std::sqrt(hi_);
   for (int k = 0; k < levels_; ++k) {
-    const double root = levels_ == 1 ? rootLo : rootLo + (rootHi - rootLo) * k / (levels_ - 1);
+    const double root = levels_ == 1 ? rootLo_ : rootLo_ + (rootHi_ - rootLo_) * k / (levels_ - 1);
     levelMultipliers_.push_back(k == 0 ? lo_ : k == levels_ - 1 ? hi_ : root * root);
   }
   std::vector<skin::Specimen> specimens;
@@ -138,8 +139,7 @@ double SkinWalkCache::levelMultiplier(int level) const {
 int SkinWalkCache::level(double multiplier, double u) const {
   if (levels_ == 1) return 0;
   const double m = std::clamp(multiplier, lo_, hi_);
-  const double rootLo = std::sqrt(lo_);
-  const double t = (std::sqrt(m) - rootLo) / (std::sqrt(hi_) - rootLo) * (levels_ - 1);
+  const double t = (std::sqrt(m) - rootLo_) / (rootHi_ - rootLo_) * (levels_ - 1);
   const int below = std::clamp(static_cast<int>(t), 0, levels_ - 2);
   const double mBelow = levelMultipliers_[static_cast<std::size_t>(below)];
   const double mAbove = levelMultipliers_[static_cast<std::size_t>(below) + 1];

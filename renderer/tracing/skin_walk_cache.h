@@ -78,6 +78,7 @@ class SkinWalkCache {
 
  private:
   double lo_, hi_;
+  double rootLo_, rootHi_;  ///< √lo, √hi: the levels are equally spaced between them
   int levels_;
   std::vector<double> levelMultipliers_;  ///< m_k, k = 0 … levels − 1
   std::size_t channels_;

@@ -61,12 +61,11 @@ void addScore(hylios::test::ScoreFamily& family, const std::string& what, Estima
     analogError =
         std::max(analogError, std::sqrt(p * (1 - p) / (static_cast<double>(binomialRays) - 1.0)));
   }
-  const double sigma = std::hypot(analogError, spectral.standardError);
-  const double difference = analog.mean - spectral.mean;
   std::ostringstream text;
   text << what << ": analog " << analog.mean << " ± " << analog.standardError << ", spectral "
        << spectral.mean << " ± " << spectral.standardError;
-  family.add(text.str(), sigma > 0 ? difference / sigma : (difference == 0 ? 0.0 : INFINITY));
+  family.add(text.str(), hylios::test::zScore(analog.mean - spectral.mean,
+                                              std::hypot(analogError, spectral.standardError)));
 }
 
 /// Every bin statistic of each bundle member's table against the analog table of its wavelength.

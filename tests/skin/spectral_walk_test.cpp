@@ -39,8 +39,7 @@ std::vector<SkinOptics> opticsAt(const std::string& specimen,
 }
 
 double z(const Estimate& a, const Estimate& b) {
-  const double sigma = std::hypot(a.standardError, b.standardError);
-  return sigma > 0 ? (a.mean - b.mean) / sigma : (a.mean == b.mean ? 0.0 : INFINITY);
+  return hylios::test::zScore(a.mean - b.mean, std::hypot(a.standardError, b.standardError));
 }
 
 /// z of a spectral estimate against a per-wavelength one made of `rays` 0/1 scores: the analog

@@ -32,6 +32,12 @@ inline double familyWiseZ(std::size_t comparisons, double falseAlarmRate = 0.01)
   return above;
 }
 
+/// z of a difference of two independent estimates over their combined standard error σ; with
+/// σ = 0 it is 0 for no difference and infinite otherwise (outside any bound).
+inline double zScore(double difference, double sigma) {
+  return sigma > 0 ? difference / sigma : (difference == 0 ? 0.0 : INFINITY);
+}
+
 /// Collects named z scores; `expectWithinFamilyWiseBound` fails once, listing every score
 /// outside the family's bound (a non-finite score is always outside).
 class ScoreFamily {
