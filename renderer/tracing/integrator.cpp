@@ -15,6 +15,7 @@
 #include "renderer/image/film_output.h"
 #include "renderer/scene/data_paths.h"
 #include "renderer/scene/emission_spectrum.h"
+#include "renderer/tracing/channel_buffer.h"
 #include "renderer/tracing/surface_vectors.h"
 #include "skin/core/constants.h"
 #include "skin/core/vector3.h"
@@ -236,24 +237,25 @@ void Integrator::radiance(const Ray& cameraRay, const PathSpectrum& spectrum, Sa
                           RenderStats& stats, double* L) const {
   ++stats.paths;
   std::fill(L, L + spectrum.size(), 0.0);
-  tracePath(cameraRay, 0, std::vector<double>(spectrum.size(), 1.0), spectrum, samples, stats, L,
-            spectrum.spectral);
+  const ChannelBuffer ones(spectrum.size(), 1.0);
+  tracePath(cameraRay, 0, ones.data(), spectrum, samples, stats, L, spectrum.spectral);
 }
 
-void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughput,
+void Integrator::tracePath(Ray ray, int firstDepth, const double* throughput,
                            const PathSpectrum& spectrum, SampleStream& samples, RenderStats& stats,
                            double* L, bool splitFirstSkinHit, double firstPdf) const {
   const std::size_t n = spectrum.size();
   const int maxDepth = scene_.integrator.maxDepth;
-  std::vector<double> albedoStore(n, 0.0);
-  double* beta = throughput.data();
+  ChannelBuffer betaStore(throughput, throughput + n), albedoStore(n);
+  double* beta = betaStore.data();
   double* albedo = albedoStore.data();
   // Camera, dielectric or skin surface reflection (no density): emitters count fully.
   bool lastSpecular = !(firstPdf > 0);
   double lastPdf = firstPdf;  // density (sr⁻¹) of the continued direction, for MIS at emitters
   glm::dvec3 lastPoint = ray.origin;
   auto anyThroughput = [&] { return std::any_of(beta, beta + n, [](double b) { return b > 0; }); };
-  std::vector<double> control;             // the exit's control variate throughput (header)
+  ChannelBuffer control(n);  // the exit's control variate throughput (header), when useControl
+  bool useControl = false;
   std::optional<FacingNormals> controlAt;  // set at a skin exit that has one: the entry's normals
   for (int depth = firstDepth;; ++depth) {
     const std::optional<SurfaceHit> hit = geometry_->intersect(ray);
@@ -293,24 +295,24 @@ void Integrator::tracePath(Ray ray, int firstDepth, std::vector<double> throughp
       // once, the walk forced in): one coin fewer where most of the image's skin noise is made.
       const bool split = splitFirstSkinHit && spectrum.spectral;
       splitFirstSkinHit = false;
-      std::vector<double> surface(split ? n : 0, 0.0), before(split ? beta : beta + n, beta + n);
+      ChannelBuffer surface(split ? n : 0), before(beta, beta + (split ? n : 0));
       // There, in table mode, the exit's draw (its table and offset cell) takes the pixel's
       // stratified pair: the channels' weights vary most with which table the exit came from.
       std::array<double, 2> exitSample{};
       const bool stratifyExit = split && material.skin->tables();
       if (stratifyExit) exitSample = samples.get2D();
       if (spectrum.spectral && material.skin->tables() && scene_.integrator.exitControlVariate)
-        control.resize(n);
+        useControl = true;
       const SkinScatter s =
           scatterSkin(*material.skin, *hit, ray.direction, spectrum, samples.rng(), beta,
                       split ? surface.data() : nullptr, stratifyExit ? &exitSample : nullptr,
-                      control.empty() ? nullptr : control.data());
+                      useControl ? control.data() : nullptr);
       controlAt = s.entryWeights ? std::optional<FacingNormals>(facing) : std::nullopt;
       if (s.surfaceBranch) {
         for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
         SampleStream branch = samples.branch();
-        traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth, before,
-                           std::move(surface), spectrum, branch, stats, L);
+        traceSurfaceBranch(*material.skin, *hit, ray.direction, s.surfaceDirection, depth,
+                           before.data(), surface.data(), spectrum, branch, stats, L);
       }
       if (s.kind == SkinScatter::Kind::Absorbed) {
         ++stats.skinAbsorbed;
@@ -387,9 +389,9 @@ double Integrator::radiance(const Ray& ray, std::size_t channel, skin::Rng& rng,
 
 void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit,
                                     const glm::dvec3& incident, const glm::dvec3& direction,
-                                    int depth, const std::vector<double>& arriving,
-                                    std::vector<double> beta, const PathSpectrum& spectrum,
-                                    SampleStream& samples, RenderStats& stats, double* L) const {
+                                    int depth, const double* arriving, const double* beta,
+                                    const PathSpectrum& spectrum, SampleStream& samples,
+                                    RenderStats& stats, double* L) const {
   ++stats.skinSurfaceExits;
   const FacingNormals facing = faceTheRay(incident, hit.geometricNormal, hit.shadingNormal);
   // The branch's lobe is F_λ(h)·p(ω), p its own sampling density (SkinMaterial::
@@ -407,7 +409,7 @@ void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& 
     fresnel.resize(spectrum.size());
     for (std::size_t i = 0; i < spectrum.size(); ++i)
       fresnel[i] = skin.surfaceFresnel(spectrum[i], cosFacet);
-    addDirect(direct, spectrum, arriving.data(), fresnel.data(), L);
+    addDirect(direct, spectrum, arriving, fresnel.data(), L);
   }
   if (!(glm::dot(direction, facing.geometric) > 0)) {
     ++stats.belowSurface;
@@ -415,7 +417,7 @@ void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& 
   }
   tracePath(
       spawn(hit.position, facing.geometric, direction, std::numeric_limits<double>::infinity()),
-      depth + 1, std::move(beta), spectrum, samples, stats, L, false, density(direction));
+      depth + 1, beta, spectrum, samples, stats, L, false, density(direction));
 }
 
 SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,

@@ -212,18 +212,17 @@ class Integrator {
   /// `throughput`, adding into L; splitFirstSkinHit: the first skin hit splits its entry;
   /// firstPdf > 0: the density (sr⁻¹) with which `ray`'s direction was sampled, for MIS with
   /// next-event estimation at an emitter it meets (0: a specular direction, counted fully).
-  void tracePath(Ray ray, int firstDepth, std::vector<double> throughput,
-                 const PathSpectrum& spectrum, SampleStream& samples, RenderStats& stats, double* L,
-                 bool splitFirstSkinHit, double firstPdf = 0) const;
+  void tracePath(Ray ray, int firstDepth, const double* throughput, const PathSpectrum& spectrum,
+                 SampleStream& samples, RenderStats& stats, double* L, bool splitFirstSkinHit,
+                 double firstPdf = 0) const;
   /// The surface reflection scored at a split skin entry (throughput `arriving` before the skin,
   /// `beta` after the branch's Fresnel weight): next-event estimation of every light with the
   /// branch's exact lobe, then the reflected ray as a path of its own (no further split), the two
   /// combined by MIS.
   void traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& hit,
                           const glm::dvec3& incident, const glm::dvec3& direction, int depth,
-                          const std::vector<double>& arriving, std::vector<double> beta,
-                          const PathSpectrum& spectrum, SampleStream& samples, RenderStats& stats,
-                          double* L) const;
+                          const double* arriving, const double* beta, const PathSpectrum& spectrum,
+                          SampleStream& samples, RenderStats& stats, double* L) const;
   /// Marks the pixels whose centre ray sees a shape that does not emit (the noise mask).
   void setCoverage(Film& film) const;
   /// Samples [firstSample, endSample) of every pixel of `film` (sample passes, see RenderOptions).
