@@ -8,6 +8,7 @@
 
 #include "skin/core/constants.h"
 #include "skin/core/content_hash.h"
+#include "skin/exit_table_rays.h"
 #include "skin/sampling/discrete_sampling.h"
 
 namespace hylios::skin {
@@ -75,6 +76,12 @@ void hashWalkAndSettings(ContentHash& h, const WalkOptions& walk, const ExitTabl
       .addU64(static_cast<std::uint64_t>(s.offsetAzimuthBins));
   h.addU64(static_cast<std::uint64_t>(s.polarBins)).addBool(s.tabulatedMelanosomes);
   h.addDouble(ExitTable::kMinRadiusCm).addDouble(ExitTable::kMaxRadiusCm);
+  if (s.raysByUse)  // (absent for uniform bins, so their keys are those of before the rule)
+    h.addString("rays by use")
+        .addDouble(kFullUse)
+        .addDouble(kLeastRaysFraction)
+        .addU64(static_cast<std::uint64_t>(kUseAngles))
+        .addU64(static_cast<std::uint64_t>(kUseEntriesPerAngle));
 }
 
 /// Polar bin of a cosine in [0, 1] (uniform bins; cosine 1 goes to the last).
@@ -97,9 +104,7 @@ bool sameWalkPhysics(const WalkOptions& a, const WalkOptions& b) {
          a.tabulatedMelanosomes == b.tabulatedMelanosomes;
 }
 
-std::uint64_t chunksPerBin(const ExitTableSettings& settings) {
-  return (settings.raysPerBin + kChunkRays - 1) / kChunkRays;
-}
+std::uint64_t chunksOf(std::uint64_t rays) { return (rays + kChunkRays - 1) / kChunkRays; }
 
 }  // namespace
 
@@ -291,26 +296,39 @@ void ExitTable::tally(Bin& bin, const SpectralPath& path, std::size_t member,
   bin.absorbedSquares += absorbedHere * absorbedHere;
 }
 
+std::vector<std::uint64_t> ExitTable::raysOfBins(const SkinWalk& walk,
+                                                 const ExitTableSettings& settings) {
+  validateSettings(settings);
+  const auto bins = static_cast<std::size_t>(settings.cosineBins);
+  if (!settings.raysByUse) return std::vector<std::uint64_t>(bins, settings.raysPerBin);
+  return raysByUse(worstCaseBinUse(walk, settings.cosineBins, settings.seed), settings.raysPerBin);
+}
+
 ExitTable ExitTable::build(const SkinWalk& walk, const ExitTableSettings& settings) {
   ExitTable table(walk, settings, key(walk.optics(), walk.options(), settings), 1);
   const SkinWalk buildWalk(walk.optics(), buildOptions(walk.options(), settings));
-  const std::size_t bins = static_cast<std::size_t>(settings.cosineBins);
-  const std::uint64_t chunks = chunksPerBin(settings);
-  std::vector<Bin> partials(bins * chunks, table.emptyBin());  // per-chunk partial bins
-  tbb::parallel_for(std::size_t{0}, bins * chunks, [&](std::size_t task) {
-    const std::size_t k = task / chunks;
-    const std::uint64_t first = (task % chunks) * kChunkRays;
-    const std::uint64_t last = std::min(first + kChunkRays, settings.raysPerBin);
-    const double mu = table.binCosine(static_cast<int>(k));
+  const std::vector<std::uint64_t> rays = raysOfBins(walk, settings);
+  struct Task {
+    std::size_t bin;
+    std::uint64_t first, last;
+  };
+  std::vector<Task> tasks;  // fixed chunks of every bin, in bin order
+  for (std::size_t k = 0; k < rays.size(); ++k)
+    for (std::uint64_t first = 0; first < rays[k]; first += kChunkRays)
+      tasks.push_back({k, first, std::min(first + kChunkRays, rays[k])});
+  std::vector<Bin> partials(tasks.size(), table.emptyBin());  // per-chunk partial bins
+  tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
+    const Task& task = tasks[t];
+    const double mu = table.binCosine(static_cast<int>(task.bin));
     const Vec3 direction{std::sqrt(1 - mu * mu), 0, mu};
-    for (std::uint64_t i = first; i < last; ++i) {
-      Rng rng(settings.seed, k, i);
-      table.tally(partials[task], buildWalk.traceEntered(direction, rng));
+    for (std::uint64_t i = task.first; i < task.last; ++i) {
+      Rng rng(settings.seed, task.bin, i);
+      table.tally(partials[t], buildWalk.traceEntered(direction, rng));
     }
   });
-  for (std::size_t k = 0; k < bins; ++k) {
+  for (std::size_t k = 0, t = 0; k < rays.size(); ++k) {
     Bin& b = table.newBin();
-    for (std::uint64_t c = 0; c < chunks; ++c) b.merge(partials[k * chunks + c]);
+    for (; t < tasks.size() && tasks[t].bin == k; ++t) b.merge(partials[t]);
   }
   table.prepareSampling();
   return table;
@@ -335,14 +353,15 @@ std::vector<ExitTable> ExitTable::buildBundle(const std::vector<const SkinWalk*>
   for (std::size_t m = 0; m < members; ++m)
     tables.push_back(ExitTable(*bundle[m], settings, bundleKey(bundle, m, settings), members));
   // Bin by bin (partials for one bin's chunks × members at a time), chunks in parallel.
-  const std::uint64_t chunks = chunksPerBin(settings);
+  const std::vector<std::uint64_t> rays = raysOfBins(*bundle[0], settings);
   for (int k = 0; k < settings.cosineBins; ++k) {
     const double mu = tables[0].binCosine(k);
     const Vec3 direction{std::sqrt(1 - mu * mu), 0, mu};
+    const std::uint64_t binRays = rays[static_cast<std::size_t>(k)], chunks = chunksOf(binRays);
     std::vector<Bin> partials(chunks * members, tables[0].emptyBin());  // [chunk][member]
     tbb::parallel_for(std::uint64_t{0}, chunks, [&](std::uint64_t c) {
       SpectralPath path;
-      const std::uint64_t last = std::min((c + 1) * kChunkRays, settings.raysPerBin);
+      const std::uint64_t last = std::min((c + 1) * kChunkRays, binRays);
       for (std::uint64_t i = c * kChunkRays; i < last; ++i) {
         Rng rng(settings.seed, static_cast<std::uint64_t>(k), i);
         spectral.traceEntered(direction, rng, path);

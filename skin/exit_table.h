@@ -31,7 +31,8 @@
 //     (BinStatistics: weight / N per outcome, exact in expectation).
 // SkinPath::events of a sampled path counts the entry crossing only.
 //
-// Building: bins × rays walks, ray i of bin k on Rng(seed, k, i), in fixed chunks run in parallel
+// Building: bins × rays walks (with ExitTableSettings::raysByUse, N_k walks in bin k instead of N:
+// skin/exit_table_rays.h), ray i of bin k on Rng(seed, k, i), in fixed chunks run in parallel
 // (TBB) and merged in chunk order: the table is the same at any thread count. With
 // ExitTableSettings::tabulatedMelanosomes the build walks use WalkOptions::tabulatedMelanosomes.
 // A bundle's build makes the same walks once for all its wavelengths (spectral paths with
@@ -72,6 +73,9 @@ struct ExitTableSettings {
   int offsetAzimuthBins = 8;         ///< A, over |φ − φ_t| ∈ [0, π]
   int polarBins = 32;                ///< P, uniform in cosθ of the exit direction
   bool tabulatedMelanosomes = true;  ///< build with WalkOptions::tabulatedMelanosomes
+  /// Walks per bin by how much rays from air can use the bin (skin/exit_table_rays.h): bin k gets
+  /// the first N_k ≤ N of its N walks. false: every bin gets N.
+  bool raysByUse = false;
 };
 
 /// Exact per-bin estimates (from the build's walks) with standard errors.
@@ -91,6 +95,9 @@ class ExitTable {
   static constexpr double kMinRadiusCm = 1e-5;
   static constexpr double kMaxRadiusCm = 30;
 
+  /// Walks per bin for `walk` (the first walk of a bundle): N each, or by use (raysByUse).
+  static std::vector<std::uint64_t> raysOfBins(const SkinWalk& walk,
+                                               const ExitTableSettings& settings);
   /// The key of the table for these inputs (FNV-1a 64 of every field, skin/core/content_hash.h).
   static std::uint64_t key(const SkinOptics& optics, const WalkOptions& walk,
                            const ExitTableSettings& settings);

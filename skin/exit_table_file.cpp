@@ -137,7 +137,9 @@ bool ExitTable::parsePayload(const std::string& payload, std::string* whyNot) {
       finite = finite && std::isfinite(x) && x >= 0;
     });
     if (!r.ok) return fail("payload ends early");
-    if (b.rays != s.raysPerBin) return fail("bin ray count differs");
+    const bool raysFit =
+        s.raysByUse ? b.rays >= 2 && b.rays <= s.raysPerBin : b.rays == s.raysPerBin;
+    if (!raysFit) return fail("bin ray count differs");
     if (!finite) return fail("a weight is not finite and non-negative");
     double ends = b.subsurface + b.transmitted + b.eventLimited;
     for (std::size_t l = 0; l < kLayerCount; ++l) {

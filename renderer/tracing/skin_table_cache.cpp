@@ -12,12 +12,14 @@ skin::ExitTableSettings SkinTableCache::renderSettings(std::uint64_t raysPerBin)
   skin::ExitTableSettings settings;
   settings.cosineBins = 12;
   settings.raysPerBin = raysPerBin;
+  settings.raysByUse = true;  // a render's rays from air: the low bins get few walks
   return settings;
 }
 
 skin::ExitTableSettings SkinTableCache::curveSettings() {
   skin::ExitTableSettings settings = renderSettings();
   settings.raysPerBin = 40000;
+  settings.raysByUse = false;  // a curve's number at any angle from equally built bins
   return settings;
 }
 

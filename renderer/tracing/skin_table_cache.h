@@ -31,7 +31,8 @@ class SkinTableCache {
   /// bin by default: a table's sampling error, 1–2 % of P(subsurface) per bin, is a fixed bias of
   /// the render: a few tenths of a percent where many bins share the image, up to ≈ 3 % per
   /// channel under a narrow light facing the camera; docs/interpretations.md, "Render tables").
-  /// `raysPerBin`: the scene's integrator.table_rays_per_bin (IntegratorDesc).
+  /// Bins that rays from air seldom reach get fewer walks (ExitTableSettings::raysByUse,
+  /// skin/exit_table_rays.h). `raysPerBin`: the scene's integrator.table_rays_per_bin.
   static skin::ExitTableSettings renderSettings(std::uint64_t raysPerBin = kDefaultTableRaysPerBin);
   /// The settings of a reflectance curve's tables (`spectrum --skin-model table`, Python): K = 12,
   /// N = 40 000 rays per bin, since a curve has no per-pixel noise to hide a table's error in.

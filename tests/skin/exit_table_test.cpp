@@ -348,6 +348,7 @@ TEST(ExitTableFile, KeyCoversEveryInput) {
   withSettings([](ExitTableSettings& s) { s.radialBins += 1; });
   withSettings([](ExitTableSettings& s) { s.polarBins += 1; });
   withSettings([](ExitTableSettings& s) { s.tabulatedMelanosomes = !s.tabulatedMelanosomes; });
+  withSettings([](ExitTableSettings& s) { s.raysByUse = !s.raysByUse; });
   std::sort(keys.begin(), keys.end());
   EXPECT_EQ(std::unique(keys.begin(), keys.end()), keys.end())
       << "two different inputs gave the same key";
