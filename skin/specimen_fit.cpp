@@ -177,6 +177,46 @@ std::vector<Estimate> modelReflectance(const Specimen& specimen, const SpectralD
   return r;
 }
 
+namespace {
+
+/// Per interior quantity (in the [0, 1] parameter units): the variance of the optimum caused by
+/// the model curve's Monte Carlo noise at options.rays, from kFitNoiseBatches independent curves
+/// of rays/kFitNoiseBatches rays each, projected by (JᵀJ)⁻¹Jᵀ (`a` = JᵀJ over `interior`).
+std::vector<double> modelNoiseVariance(const Specimen& optimum, const SpectralDatabase& spectra,
+                                       const std::vector<double>& wavelengthNm,
+                                       const FitOptions& options, const std::vector<double>& jac,
+                                       std::size_t n, const std::vector<std::size_t>& interior,
+                                       const std::vector<double>& a) {
+  const std::size_t f = interior.size(), m = wavelengthNm.size();
+  FitOptions batch = options;
+  batch.rays = std::max<std::uint64_t>(1, options.rays / kFitNoiseBatches);
+  std::vector<std::vector<double>> shifts;  // per batch: (JᵀJ)⁻¹Jᵀ c_b
+  for (std::uint64_t b = 0; b < kFitNoiseBatches; ++b) {
+    batch.seed = options.seed + kFitNoiseSeedOffset + b;
+    const std::vector<Estimate> curve = modelReflectance(optimum, spectra, wavelengthNm, batch);
+    std::vector<double> jtc(f, 0), shift;
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t k = 0; k < f; ++k) jtc[k] += jac[i * n + interior[k]] * curve[i].mean;
+    if (!solveCholesky(a, jtc, f, shift))
+      return std::vector<double>(f, std::numeric_limits<double>::infinity());
+    shifts.push_back(shift);
+  }
+  std::vector<double> variance(f, 0);
+  const double batches = static_cast<double>(kFitNoiseBatches);
+  for (std::size_t k = 0; k < f; ++k) {
+    double mean = 0;
+    for (const auto& shift : shifts) mean += shift[k] / batches;
+    double squares = 0;
+    for (const auto& shift : shifts) squares += (shift[k] - mean) * (shift[k] - mean);
+    // Sample variance of a batch, then scaled to a curve of `rays` (kFitNoiseBatches× the rays).
+    variance[k] = squares / (batches - 1) * static_cast<double>(batch.rays) /
+                  static_cast<double>(options.rays);
+  }
+  return variance;
+}
+
+}  // namespace
+
 FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra,
                       const FitTarget& target, const FitOptions& options) {
   // ---- the request ----
@@ -349,15 +389,22 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra,
       for (std::size_t k = 0; k < f; ++k)
         for (std::size_t l = 0; l < f; ++l)
           a[k * f + l] += jac[i * n + interior[k]] * jac[i * n + interior[l]];
+    // The frozen noise of the model's own curve (the fit's seed) moves the optimum by
+    // −(JᵀJ)⁻¹Jᵀδ; its covariance comes from kNoiseBatches curves of rays/kNoiseBatches rays on
+    // other seeds at the optimum: Var(u_k) = Var_b[((JᵀJ)⁻¹Jᵀc_b)_k] / kNoiseBatches.
+    const std::vector<double> modelNoise = modelNoiseVariance(
+        result.specimen, spectra, target.wavelengthNm, options, jac, n, interior, a);
     for (std::size_t k = 0; k < f; ++k) {
       std::vector<double> e(f, 0), col;
       e[k] = 1;
       const std::size_t qk = interior[k];
       const double range = q[qk].upper - q[qk].lower;
-      result.quantities[qk].uncertainty = solveCholesky(a, e, f, col) && col[k] > 0
-                                              ? std::sqrt(s2 * col[k]) * range
-                                              : std::numeric_limits<double>::infinity();
+      result.quantities[qk].uncertainty =
+          solveCholesky(a, e, f, col) && col[k] > 0 && std::isfinite(modelNoise[k])
+              ? std::sqrt(s2 * col[k] + modelNoise[k]) * range
+              : std::numeric_limits<double>::infinity();
     }
+    result.evaluations += 1;  // the batches: one more curve's worth of rays
   }
   return result;
 }

@@ -23,15 +23,15 @@
 // | papillary_dermis_thickness  | papillary dermis thickness                                  | cm   |
 // | reticular_dermis_thickness  | reticular dermis thickness                                  | cm   |
 //
-// Uncertainties (FittedQuantity::uncertainty) come from the Jacobian at the optimum and the
-// residual variance. They leave out the frozen noise of the fit's own seed, which is correlated
-// across the wavelengths of a bundle, and for the scattering quantities (melanosome content,
-// thicknesses) the finite differences also see path flips. Measured: S2 against NCSU 113 with seeds
-// 1 and 2 agrees within 1-1.5 σ; a synthetic 250-2500 nm curve (S2, basale melanosomes 5 %,
-// blood 1.2 %, water reduction 20 %) gave blood and water within 1 σ but split melanin wrongly
-// (melanosome 3.77 ± 0.03 %, colloidal 1.78 ± 0.02 % against 5 and 1.25) at the same RMS as the
-// noise: σ of the melanosome / colloidal split is then far too small. Refit with another seed to
-// see the spread.
+// Uncertainties (FittedQuantity::uncertainty) add two variances: the residuals' s²(JᵀJ)⁻¹ (the
+// measured curve's noise, taken as independent per wavelength), and the frozen noise of the
+// model's own curve (the fit's seed), which is correlated across the wavelengths of a bundle, so
+// the parameters absorb it and the residuals do not show it: its covariance is estimated at the
+// optimum from kFitNoiseBatches curves on other seeds, each with rays/kFitNoiseBatches rays (one
+// more curve's worth of rays), and projected by (JᵀJ)⁻¹Jᵀ. Measured before that second term, on
+// synthetic S2 curves over 40 seeds: the errors were 2.5–3× the stated σ; with it: see
+// docs/interpretations.md, "Fit uncertainties". For the scattering quantities (melanosome content,
+// thicknesses) the finite differences also see path flips.
 //
 // No command line here (app/fit_command.cpp is the command).
 #pragma once
@@ -75,6 +75,10 @@ void setFitQuantity(const Specimen& start, Specimen& specimen, const std::string
                     double value);
 
 /// A measured curve on the fit's wavelengths (already interpolated; same length).
+/// Batches of the model-noise term of the uncertainties, and their seeds' offset from the fit's.
+inline constexpr std::uint64_t kFitNoiseBatches = 16;
+inline constexpr std::uint64_t kFitNoiseSeedOffset = 0x5eed0000;
+
 struct FitTarget {
   std::vector<double> wavelengthNm;
   std::vector<double> reflectance;
@@ -106,7 +110,7 @@ struct FittedQuantity {
   FitQuantity quantity;
   double start = 0;
   double value = 0;
-  double uncertainty = 0;  ///< 1 σ from the Jacobian at the optimum and the residual variance
+  double uncertainty = 0;  ///< 1 σ: the residuals' and the model's own noise, at the optimum
   bool atBound = false;    ///< within 0.1 % of the range of a bound (σ then from the free ones)
 };
 
