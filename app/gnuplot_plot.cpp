@@ -101,7 +101,7 @@ void plotPanels(const std::filesystem::path& png, const std::string& title,
                                       static_cast<std::size_t>(columns));
     script << "set terminal pngcairo size " << widthPx << "," << heightPx
            << " enhanced font 'sans,10'\nset output " << quoted(tmp.string()) << "\n"
-           << "set grid\nset key outside right top\nset datafile missing 'nan'\n"
+           << "set grid\nset key below\nset datafile missing 'nan'\n"
            << "set multiplot layout " << rows << "," << columns << " title " << quoted(title)
            << "\n";
     for (std::size_t p = 0; p < panels.size(); ++p)
