@@ -390,8 +390,8 @@ FitResult fitSpecimen(const Specimen& start, const SpectralDatabase& spectra,
         for (std::size_t l = 0; l < f; ++l)
           a[k * f + l] += jac[i * n + interior[k]] * jac[i * n + interior[l]];
     // The frozen noise of the model's own curve (the fit's seed) moves the optimum by
-    // −(JᵀJ)⁻¹Jᵀδ; its covariance comes from kNoiseBatches curves of rays/kNoiseBatches rays on
-    // other seeds at the optimum: Var(u_k) = Var_b[((JᵀJ)⁻¹Jᵀc_b)_k] / kNoiseBatches.
+    // −(JᵀJ)⁻¹Jᵀδ; its covariance comes from kFitNoiseBatches curves of rays/kFitNoiseBatches
+    // rays on other seeds at the optimum: Var(u_k) = Var_b[((JᵀJ)⁻¹Jᵀc_b)_k] / kFitNoiseBatches.
     const std::vector<double> modelNoise = modelNoiseVariance(
         result.specimen, spectra, target.wavelengthNm, options, jac, n, interior, a);
     for (std::size_t k = 0; k < f; ++k) {

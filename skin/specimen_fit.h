@@ -29,9 +29,9 @@
 // the parameters absorb it and the residuals do not show it: its covariance is estimated at the
 // optimum from kFitNoiseBatches curves on other seeds, each with rays/kFitNoiseBatches rays (one
 // more curve's worth of rays), and projected by (JᵀJ)⁻¹Jᵀ. Measured before that second term, on
-// synthetic S2 curves over 40 seeds: the errors were 2.5–3× the stated σ; with it: see
-// docs/interpretations.md, "Fit uncertainties". For the scattering quantities (melanosome content,
-// thicknesses) the finite differences also see path flips.
+// synthetic S2 curves over 40 seeds: the errors were 2.5–3× the stated σ; with it, rms z ≈ 1
+// (docs/interpretations.md, "Fitting a specimen", row "Uncertainties"). For the scattering
+// quantities (melanosome content, thicknesses) the finite differences also see path flips.
 //
 // No command line here (app/fit_command.cpp is the command).
 #pragma once
@@ -74,11 +74,11 @@ double fitQuantityValue(const Specimen& specimen, const std::string& name);
 void setFitQuantity(const Specimen& start, Specimen& specimen, const std::string& name,
                     double value);
 
-/// A measured curve on the fit's wavelengths (already interpolated; same length).
 /// Batches of the model-noise term of the uncertainties, and their seeds' offset from the fit's.
 inline constexpr std::uint64_t kFitNoiseBatches = 16;
 inline constexpr std::uint64_t kFitNoiseSeedOffset = 0x5eed0000;
 
+/// A measured curve on the fit's wavelengths (already interpolated; same length).
 struct FitTarget {
   std::vector<double> wavelengthNm;
   std::vector<double> reflectance;
