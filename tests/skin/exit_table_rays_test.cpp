@@ -20,11 +20,6 @@ using namespace hylios::skin;
 
 namespace {
 
-SkinOptics s1(double wavelengthNm) {
-  static const Specimen specimen = loadSpecimen("S1", test::specimenDir());
-  return computeSkinOptics(specimen, test::spectra(), wavelengthNm);
-}
-
 TEST(ExitTableRays, RuleGivesHandValues) {
   // N_k = ceil(N · clamp((u / 0.1)², 1/64, 1)), at least 2.
   const std::vector<std::uint64_t> rays = raysByUse({0.2, 0.1, 0.05, 0.03, 0.01, 0.0}, 10000);
@@ -39,7 +34,7 @@ TEST(ExitTableRays, UseOfASmoothSurfaceFollowsSnellsLaw) {
   // angle is its linear-interpolation weight exactly; the worst case is the largest over the grid.
   WalkOptions smooth;
   smooth.roughSurface = false;
-  const SkinWalk walk(s1(550), smooth);
+  const SkinWalk walk(test::s1Optics(550), smooth);
   const double n = walk.optics().layers[0].refractiveIndex;
   const int bins = 12;
   std::vector<double> expected(bins, 0.0);
@@ -65,7 +60,7 @@ TEST(ExitTableRays, UseOfASmoothSurfaceFollowsSnellsLaw) {
 }
 
 TEST(ExitTableRays, RoughSurfaceS1ThinsOnlyTheLowBins) {
-  const SkinWalk walk(s1(550));
+  const SkinWalk walk(test::s1Optics(550));
   const std::vector<double> use = worstCaseBinUse(walk, 12, 1);
   EXPECT_EQ(use, worstCaseBinUse(walk, 12, 1));  // deterministic
   // Tilted facets reach every bin, the low ones rarely (s = 0.1): ≈ 1 % for bins 0–3.
@@ -81,7 +76,7 @@ TEST(ExitTableRays, RoughSurfaceS1ThinsOnlyTheLowBins) {
 }
 
 TEST(ExitTableRays, TablesByUseKeepTheFullBinsAndThinTheOthers) {
-  const SkinWalk walk(s1(450));
+  const SkinWalk walk(test::s1Optics(450));
   ExitTableSettings equal;
   equal.raysPerBin = 3000;
   ExitTableSettings byUse = equal;

@@ -26,11 +26,6 @@ namespace {
 
 using hylios::test::spectra;
 
-SkinOptics s1(double wavelengthNm) {
-  static const Specimen specimen = loadSpecimen("S1", test::specimenDir());
-  return computeSkinOptics(specimen, spectra(), wavelengthNm);
-}
-
 std::filesystem::path scratch(const std::string& name) {
   const auto dir = std::filesystem::path(HYLIOS_BINARY_DIR) / "exit_table_test";
   std::filesystem::create_directories(dir);
@@ -86,7 +81,7 @@ class TableAgreesWithWalk : public ::testing::TestWithParam<double> {};
 // errors (walk sample, table sample, and the table's own error bounded by the largest bin s.e.).
 TEST_P(TableAgreesWithWalk, S1) {
   const double wavelengthNm = GetParam();
-  const SkinWalk walk(s1(wavelengthNm));
+  const SkinWalk walk(test::s1Optics(wavelengthNm));
   ExitTableSettings settings;
   settings.cosineBins = 16;
   settings.raysPerBin = 4000;
@@ -136,7 +131,7 @@ class ExitTableSampling : public ::testing::Test {
     ExitTableSettings settings;
     settings.cosineBins = 4;
     settings.raysPerBin = 6000;
-    table_ = new ExitTable(ExitTable::build(SkinWalk(s1(550)), settings));
+    table_ = new ExitTable(ExitTable::build(SkinWalk(test::s1Optics(550)), settings));
   }
   static void TearDownTestSuite() { delete table_; }
   static const ExitTable* table_;
@@ -238,7 +233,7 @@ TEST_F(ExitTableSampling, AbsorptionAndSubsurfaceAddUpPerBin) {
 // ---- determinism and files ----
 
 TEST(ExitTableFile, BuildIsTheSameAtAnyThreadCountAndRoundTrips) {
-  const SkinWalk walk(s1(450));
+  const SkinWalk walk(test::s1Optics(450));
   ExitTableSettings settings;
   settings.cosineBins = 3;
   settings.raysPerBin = 5000;  // 3 chunks per bin
@@ -268,7 +263,7 @@ TEST(ExitTableFile, BuildIsTheSameAtAnyThreadCountAndRoundTrips) {
 }
 
 TEST(ExitTableFile, DamagedStaleOrForeignFilesAreRejected) {
-  const SkinWalk walk(s1(450));
+  const SkinWalk walk(test::s1Optics(450));
   ExitTableSettings settings;
   settings.cosineBins = 2;
   settings.raysPerBin = 300;
@@ -311,7 +306,7 @@ TEST(ExitTableFile, DamagedStaleOrForeignFilesAreRejected) {
 }
 
 TEST(ExitTableFile, KeyCoversEveryInput) {
-  const SkinOptics optics = s1(550);
+  const SkinOptics optics = test::s1Optics(550);
   const WalkOptions walk;
   const ExitTableSettings settings;
   const std::uint64_t base = ExitTable::key(optics, walk, settings);
@@ -355,7 +350,7 @@ TEST(ExitTableFile, KeyCoversEveryInput) {
 }
 
 TEST(ExitTableFile, BadSettingsAreClearErrors) {
-  const SkinWalk walk(s1(550));
+  const SkinWalk walk(test::s1Optics(550));
   ExitTableSettings settings;
   settings.cosineBins = 0;
   EXPECT_THROW(ExitTable::build(walk, settings), std::invalid_argument);

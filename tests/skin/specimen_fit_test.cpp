@@ -7,6 +7,8 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "skin/specimen_fit.h"
 #include "tests/support/test_spectra.h"
@@ -31,31 +33,38 @@ FitTarget synthesise(const Specimen& truth, const std::vector<double>& wavelengt
   return target;
 }
 
+// S2 with known values of the three quantities the fits below free (kTruthValues, in the order
+// of kTruthQuantities).
+const std::vector<std::string> kTruthQuantities{"colloidal", "blood", "oxygenation"};
+constexpr double kTruthValues[] = {2.0, 1.2, 70.0};
+Specimen knownTruth(const Specimen& s2) {
+  Specimen truth = s2;
+  for (std::size_t k = 0; k < kTruthQuantities.size(); ++k)
+    setFitQuantity(s2, truth, kTruthQuantities[k], kTruthValues[k]);
+  return truth;
+}
+
 TEST(SpecimenFit, RecoversKnownValuesWithinStatedUncertainties) {
   const Specimen s2 = loadSpecimen("S2", test::specimenDir());
-  Specimen truth = s2;
-  setFitQuantity(s2, truth, "colloidal", 2.0);
-  setFitQuantity(s2, truth, "blood", 1.2);
-  setFitQuantity(s2, truth, "oxygenation", 70.0);
+  const Specimen truth = knownTruth(s2);
   const std::vector<double> wavelengths = grid(400, 700, 15);
   const FitTarget target = synthesise(truth, wavelengths, 40000, 777);
   FitOptions options;
-  options.free = {"colloidal", "blood", "oxygenation"};
+  options.free = kTruthQuantities;
   options.rays = 10000;
   options.seed = 3;
   const FitResult fit = fitSpecimen(s2, test::spectra(), target, options);
   std::cout << "RMS " << fit.startRms << " -> " << fit.rms << ", " << fit.evaluations
             << " evaluations, " << fit.stopReason << "\n";
-  const double truthValues[] = {2.0, 1.2, 70.0};
   for (std::size_t k = 0; k < fit.quantities.size(); ++k) {
     const FittedQuantity& q = fit.quantities[k];
     std::cout << q.quantity.name << ": " << q.start << " -> " << q.value << " ± " << q.uncertainty
-              << " (truth " << truthValues[k] << ")\n";
+              << " (truth " << kTruthValues[k] << ")\n";
     EXPECT_FALSE(q.atBound) << q.quantity.name;
     EXPECT_GT(q.uncertainty, 0) << q.quantity.name;
-    EXPECT_LT(q.uncertainty, 0.25 * truthValues[k]) << q.quantity.name;
+    EXPECT_LT(q.uncertainty, 0.25 * kTruthValues[k]) << q.quantity.name;
     // 3σ: three quantities, each within 3σ with probability 0.997 if σ is right.
-    EXPECT_NEAR(q.value, truthValues[k], 3 * q.uncertainty) << q.quantity.name;
+    EXPECT_NEAR(q.value, kTruthValues[k], 3 * q.uncertainty) << q.quantity.name;
   }
   EXPECT_LT(fit.rms, 0.5 * fit.startRms);
   EXPECT_LT(fit.rms, 0.005);  // the synthetic curve's own noise is ≈ 0.002
@@ -70,18 +79,14 @@ TEST(SpecimenFit, StatedUncertaintiesCoverTheErrorsOverSeeds) {
   // 1.8 is far in the tail for calibrated σ (30 values, χ² with 15–30 effective degrees of
   // freedom: p < 1e-4) and far below the residual-only σ's errors.
   const Specimen s2 = loadSpecimen("S2", test::specimenDir());
-  Specimen truth = s2;
-  setFitQuantity(s2, truth, "colloidal", 2.0);
-  setFitQuantity(s2, truth, "blood", 1.2);
-  setFitQuantity(s2, truth, "oxygenation", 70.0);
-  const double truthValues[] = {2.0, 1.2, 70.0};
+  const Specimen truth = knownTruth(s2);
   const std::vector<double> wavelengths = grid(400, 700, 30);
   double squares = 0;
   int scored = 0;
   for (std::uint64_t seed = 0; seed < 10; ++seed) {
     const FitTarget target = synthesise(truth, wavelengths, 80000, 5000 + 13 * seed);
     FitOptions options;
-    options.free = {"colloidal", "blood", "oxygenation"};
+    options.free = kTruthQuantities;
     options.rays = 10000;
     options.seed = 60 + 7 * seed;
     const FitResult fit = fitSpecimen(s2, test::spectra(), target, options);
@@ -89,7 +94,7 @@ TEST(SpecimenFit, StatedUncertaintiesCoverTheErrorsOverSeeds) {
       const FittedQuantity& q = fit.quantities[k];
       if (q.atBound) continue;
       ASSERT_TRUE(std::isfinite(q.uncertainty) && q.uncertainty > 0) << q.quantity.name;
-      const double z = (q.value - truthValues[k]) / q.uncertainty;
+      const double z = (q.value - kTruthValues[k]) / q.uncertainty;
       squares += z * z;
       ++scored;
     }

@@ -26,11 +26,6 @@ using namespace hylios::skin;
 
 namespace {
 
-SkinOptics s1(double wavelengthNm) {
-  static const Specimen specimen = loadSpecimen("S1", test::specimenDir());
-  return computeSkinOptics(specimen, test::spectra(), wavelengthNm);
-}
-
 ExitTableSettings smallSettings(std::uint64_t rays) {
   ExitTableSettings settings;
   settings.cosineBins = 3;
@@ -117,7 +112,7 @@ TEST(SpectralExitTable, AgreesWithAnalogTablesOverTheSpectrum) {
   std::vector<SkinWalk> walks;
   for (double nm : {250.0, 300.0, 365.0,  400.0,  450.0,  500.0,  550.0,  600.0,  650.0,  700.0,
                     780.0, 900.0, 1100.0, 1300.0, 1400.0, 1450.0, 1650.0, 1940.0, 2200.0, 2500.0})
-    walks.emplace_back(s1(nm));
+    walks.emplace_back(test::s1Optics(nm));
   expectBundleAgrees(walks, smallSettings(6000));
 }
 
@@ -128,12 +123,13 @@ TEST(SpectralExitTable, AgreesWithAnalogTablesOfATruncatedStack) {
   epidermis.deepestLayer = Layer::StratumBasale;
   epidermis.belowRefractiveIndex = 1.4;
   std::vector<SkinWalk> walks;
-  for (double nm : {302.0, 350.0, 450.0, 600.0}) walks.emplace_back(s1(nm), epidermis);
+  for (double nm : {302.0, 350.0, 450.0, 600.0}) walks.emplace_back(test::s1Optics(nm), epidermis);
   expectBundleAgrees(walks, smallSettings(6000));
 }
 
 TEST(SpectralExitTable, SamplingReproducesTheOutcomeWeights) {
-  std::vector<SkinWalk> walks{SkinWalk(s1(450)), SkinWalk(s1(550)), SkinWalk(s1(650))};
+  std::vector<SkinWalk> walks{SkinWalk(test::s1Optics(450)), SkinWalk(test::s1Optics(550)),
+                              SkinWalk(test::s1Optics(650))};
   const std::vector<ExitTable> tables =
       ExitTable::buildBundle({&walks[0], &walks[1], &walks[2]}, smallSettings(4000));
   const ExitTable& table = tables[1];
@@ -152,7 +148,7 @@ TEST(SpectralExitTable, SamplingReproducesTheOutcomeWeights) {
 }
 
 TEST(SpectralExitTable, BuildIsTheSameAtAnyThreadCountAndMembersKeepTheirFiles) {
-  std::vector<SkinWalk> walks{SkinWalk(s1(500)), SkinWalk(s1(520))};
+  std::vector<SkinWalk> walks{SkinWalk(test::s1Optics(500)), SkinWalk(test::s1Optics(520))};
   const std::vector<const SkinWalk*> bundle{&walks[0], &walks[1]};
   const ExitTableSettings settings = smallSettings(5000);  // 3 chunks per bin
   const auto one = scratch("one.hxt"), two = scratch("two.hxt");
@@ -178,7 +174,8 @@ TEST(SpectralExitTable, BuildIsTheSameAtAnyThreadCountAndMembersKeepTheirFiles) 
 TEST(SpectralExitTable, WalksOfDifferentOptionsCannotShareABundle) {
   WalkOptions noRayleigh;
   noRayleigh.rayleigh = false;
-  std::vector<SkinWalk> walks{SkinWalk(s1(500)), SkinWalk(s1(520), noRayleigh)};
+  std::vector<SkinWalk> walks{SkinWalk(test::s1Optics(500)),
+                              SkinWalk(test::s1Optics(520), noRayleigh)};
   EXPECT_THROW(ExitTable::buildBundle({&walks[0], &walks[1]}, smallSettings(100)),
                std::invalid_argument);
   EXPECT_THROW(ExitTable::buildBundle({}, smallSettings(100)), std::invalid_argument);
