@@ -27,7 +27,7 @@ struct SlabOptions {
   std::uint64_t rays = 1000000, seed = 1;
   std::string out;
   skin::AbsorptionScheme scheme = skin::AbsorptionScheme::WeightWithRoulette;
-  bool diffuse = false;
+  bool diffuse = false, scalar = false;
   int threads = 0;
 };
 
@@ -60,6 +60,7 @@ void runSlab(const SlabOptions& o) {
   run.photons = o.rays;
   run.seed = o.seed;
   run.scheme = o.scheme;
+  run.laneWalk = !o.scalar;
   if (o.rays == 0) throw std::invalid_argument("--rays must be at least 1");
   if (o.threads < 0) throw std::invalid_argument("--threads must be >= 0 (0: all cores)");
   const ThreadLimit threadLimit(o.threads);
@@ -102,6 +103,9 @@ void registerSlabCommand(CLI::App& app) {
   addEnumOption(*sub, "--scheme", options->scheme, skin::kAbsorptionSchemeNames,
                 "absorption scoring: weighted (default; absorption as weight, MCML's implicit "
                 "capture with roulette) or analog (the packet dies where it is absorbed)");
+  sub->add_flag("--scalar", options->scalar,
+                "weighted scheme: trace one packet at a time in double precision (the reference) "
+                "instead of eight at once in single-precision lanes");
   sub->add_option("--threads", options->threads, "worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

@@ -76,6 +76,10 @@ void mcmlThreeLayerSlab(benchmark::State& state) {
   problem.layers = {{1.37, 1, 100, 0.9, 0.1}, {1.37, 1, 10, 0.0, 0.1}, {1.37, 2, 10, 0.7, 0.2}};
   SlabRunOptions run;
   run.photons = 50000;
+  // Arg 0: analog; 1: weighted, one packet at a time (double); 2: weighted in eight float lanes.
+  run.scheme =
+      state.range(0) == 0 ? AbsorptionScheme::Analog : AbsorptionScheme::WeightWithRoulette;
+  run.laneWalk = state.range(0) == 2;
   for (auto _ : state) {
     benchmark::DoNotOptimize(simulateLayeredSlab(problem, run));
     run.seed += 1;
@@ -95,6 +99,11 @@ BENCHMARK_CAPTURE(skinWalk, S1, std::string("S1"))->Apply(atWalkWavelengths);
 BENCHMARK_CAPTURE(skinWalk, S4, std::string("S4"))->Apply(atWalkWavelengths);
 BENCHMARK_CAPTURE(skinWalkTabulated, S1, std::string("S1"))->Apply(atWalkWavelengths);
 BENCHMARK_CAPTURE(skinWalkTabulated, S4, std::string("S4"))->Apply(atWalkWavelengths);
-BENCHMARK(mcmlThreeLayerSlab)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(mcmlThreeLayerSlab)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 
 BENCHMARK_MAIN();

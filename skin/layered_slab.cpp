@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -14,14 +15,17 @@
 #include "skin/core/vector3.h"
 #include "skin/fresnel.h"
 #include "skin/interface_crossing.h"
+#include "skin/layered_slab_lanes.h"
 #include "skin/sampling/henyey_greenstein.h"
 
 namespace hylios::skin {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// MCML's defaults for implicit capture: roulette below this weight, survive with 1/kRouletteFactor.
-constexpr double kRouletteThreshold = 1e-4;
+// Implicit capture: roulette below this weight, survive with 1/kRouletteFactor. MCML rolls below
+// 1e-4; below 0.05 the walk ends its low-weight tails sooner at almost no variance (the MCML
+// sample: 1.15x the efficiency; docs/interpretations.md, "Generic slab").
+constexpr double kRouletteThreshold = 0.05;
 constexpr double kRouletteFactor = 10.0;
 // Photons per parallel task, and tasks per in-order reduction batch (bounds the memory held).
 constexpr std::uint64_t kPhotonsPerChunk = 4096;
@@ -157,20 +161,22 @@ double SlabWalker::sampleDiffuseEntryCos(Rng& rng) const {
   }
 }
 
+Vec3 SlabWalker::launchDirection(Rng& rng) const {
+  if (!diffuseIncidence_) return {launchSinTheta_, 0.0, launchCosTheta_};
+  // Azimuth is irrelevant in a plane-parallel stack: the walk sees only u.z and the layers.
+  const double muAmbient = sampleDiffuseEntryCos(rng);
+  const FresnelResult f = fresnel(muAmbient, nAmbientAbove_, layers_[0].n);
+  const double sinAmbient = std::sqrt(std::fmax(0.0, 1.0 - muAmbient * muAmbient));
+  return {sinAmbient * nAmbientAbove_ / layers_[0].n, 0.0, f.cosTransmitted};
+}
+
 void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
   scores.diffuseReflectance = scores.transmittance = scores.unscatteredTransmittance = 0.0;
   scores.layerAbsorptance.assign(layers_.size(), 0.0);
   const std::size_t lastLayer = layers_.size() - 1;
   const bool analog = scheme_ == AbsorptionScheme::Analog;
   double weight = launchWeight_;
-  Vec3 u{launchSinTheta_, 0.0, launchCosTheta_};
-  if (diffuseIncidence_) {
-    // Azimuth is irrelevant in a plane-parallel stack: the walk sees only u.z and the layers.
-    const double muAmbient = sampleDiffuseEntryCos(rng);
-    const FresnelResult f = fresnel(muAmbient, nAmbientAbove_, layers_[0].n);
-    const double sinAmbient = std::sqrt(std::fmax(0.0, 1.0 - muAmbient * muAmbient));
-    u = {sinAmbient * nAmbientAbove_ / layers_[0].n, 0.0, f.cosTransmitted};
-  }
+  Vec3 u = launchDirection(rng);
   double z = 0.0;
   std::size_t k = 0;
   bool scattered = false;
@@ -241,22 +247,45 @@ namespace {
 using Tally = std::vector<RunningStatistic>;
 constexpr std::size_t kFirstLayerTally = 5;
 
+void addPacket(Tally& tally, double diffuseReflectance, double transmittance,
+               double unscatteredTransmittance, const double* layerAbsorptance,
+               std::size_t layers) {
+  tally[0].add(diffuseReflectance);
+  tally[1].add(transmittance);
+  tally[2].add(unscatteredTransmittance);
+  tally[3].add(transmittance - unscatteredTransmittance);
+  double absorbed = 0.0;
+  for (std::size_t l = 0; l < layers; ++l) {
+    absorbed += layerAbsorptance[l];
+    tally[kFirstLayerTally + l].add(layerAbsorptance[l]);
+  }
+  tally[4].add(absorbed);
+}
+
 void traceChunk(const SlabWalker& walker, std::uint64_t seed, std::uint64_t first,
                 std::uint64_t last, Tally& tally) {
   PhotonScores scores;
   for (std::uint64_t i = first; i < last; ++i) {
     Rng rng(seed, 0, i);
     walker.trace(rng, scores);
-    tally[0].add(scores.diffuseReflectance);
-    tally[1].add(scores.transmittance);
-    tally[2].add(scores.unscatteredTransmittance);
-    tally[3].add(scores.transmittance - scores.unscatteredTransmittance);
-    double absorbed = 0.0;
-    for (std::size_t l = 0; l < scores.layerAbsorptance.size(); ++l) {
-      absorbed += scores.layerAbsorptance[l];
-      tally[kFirstLayerTally + l].add(scores.layerAbsorptance[l]);
-    }
-    tally[4].add(absorbed);
+    addPacket(tally, scores.diffuseReflectance, scores.transmittance,
+              scores.unscatteredTransmittance, scores.layerAbsorptance.data(),
+              scores.layerAbsorptance.size());
+  }
+}
+
+// The lane walk writes each packet's row; the rows are summed in packet order.
+void traceChunkInLanes(const SlabLaneWalker& lanes, std::uint64_t seed, std::uint64_t first,
+                       std::uint64_t last, Tally& tally) {
+  const std::size_t stride = lanes.scoresPerPacket();
+  std::vector<double> rows((last - first) * stride);
+  lanes.trace(seed, first, last, rows.data());
+  for (std::size_t i = 0; i < last - first; ++i) {
+    const double* row = rows.data() + i * stride;
+    addPacket(tally, row[SlabLaneWalker::kDiffuseReflectance], row[SlabLaneWalker::kTransmittance],
+              row[SlabLaneWalker::kUnscatteredTransmittance],
+              row + SlabLaneWalker::kFirstLayerAbsorptance,
+              stride - SlabLaneWalker::kFirstLayerAbsorptance);
   }
 }
 
@@ -264,6 +293,9 @@ void traceChunk(const SlabWalker& walker, std::uint64_t seed, std::uint64_t firs
 
 SlabResult simulateLayeredSlab(const SlabProblem& problem, const SlabRunOptions& options) {
   const SlabWalker walker(problem, options.scheme);
+  const bool inLanes = options.laneWalk && options.scheme == AbsorptionScheme::WeightWithRoulette;
+  const std::optional<SlabLaneWalker> lanes =
+      inLanes ? std::optional<SlabLaneWalker>(std::in_place, walker) : std::nullopt;
   const std::size_t quantities = kFirstLayerTally + walker.layerCount();
   Tally total(quantities);
   const std::uint64_t chunks = (options.photons + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
@@ -277,7 +309,10 @@ SlabResult simulateLayeredSlab(const SlabProblem& problem, const SlabRunOptions&
                           const std::uint64_t first = (firstChunk + c) * kPhotonsPerChunk;
                           const std::uint64_t last =
                               std::min(options.photons, first + kPhotonsPerChunk);
-                          traceChunk(walker, options.seed, first, last, batch[c]);
+                          if (lanes)
+                            traceChunkInLanes(*lanes, options.seed, first, last, batch[c]);
+                          else
+                            traceChunk(walker, options.seed, first, last, batch[c]);
                         }
                       });
     for (const Tally& chunk : batch)  // in chunk order: the sums do not depend on the threads

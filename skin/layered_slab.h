@@ -14,6 +14,7 @@
 #include "skin/core/enum_names.h"
 #include "skin/core/random.h"
 #include "skin/core/statistics.h"
+#include "skin/core/vector3.h"
 
 namespace hylios::skin {
 
@@ -43,7 +44,8 @@ void validateSlabProblem(const SlabProblem& problem);
 /// How absorption is scored. Analog: the photon dies where it is absorbed (the paper's way), each
 /// packet scores in exactly one place. WeightWithRoulette: MCML's implicit capture — each
 /// interaction deposits the fraction mua/mut of the weight and the packet goes on with the rest;
-/// below weight 1e-4 it survives a Russian roulette with chance 1/10 and weight x10 (unbiased).
+/// below weight 0.05 (MCML: 1e-4) it survives a Russian roulette with chance 1/10 and weight x10
+/// (unbiased).
 enum class AbsorptionScheme { Analog, WeightWithRoulette };
 /// Named "analog" / "weighted" on the command line (`hylios slab --scheme`).
 inline constexpr EnumNames<AbsorptionScheme, 2> kAbsorptionSchemeNames{
@@ -66,6 +68,11 @@ class SlabWalker {
   /// light the hemispherical average 2 * integral of R(mu) mu dmu); packets start inside with
   /// weight 1 - specularReflectance().
   double specularReflectance() const { return specularReflectance_; }
+  /// A packet's weight as it starts inside layer 1: 1 - specularReflectance().
+  double launchWeight() const { return launchWeight_; }
+  /// A packet's unit direction as it starts inside layer 1 (refracted beam; for diffuse light
+  /// drawn with sampleDiffuseEntryCos, the azimuth fixed at 0: the stack cannot see it).
+  Vec3 launchDirection(Rng& rng) const;
   /// For diffuse incidence: the cosine (in the ambient) of one packet's incoming direction, drawn
   /// from the density of the light that enters, 2 mu (1 - R(mu)) / (1 - specularReflectance()).
   double sampleDiffuseEntryCos(Rng& rng) const;
@@ -73,10 +80,16 @@ class SlabWalker {
   /// Runs one packet to its end and overwrites `scores` (its layerAbsorptance is resized).
   void trace(Rng& rng, PhotonScores& scores) const;
 
- private:
+  /// A layer as the walk uses it: depth range, extinction, absorbed fraction per interaction,
+  /// asymmetry, and the indices of the layer and of its neighbours above and below.
   struct LayerData {
     double zTopCm, zBottomCm, muT_perCm, absorptionProbability, g, n, nAbove, nBelow;
   };
+  const std::vector<LayerData>& layers() const { return layers_; }
+  AbsorptionScheme scheme() const { return scheme_; }
+  bool diffuseIncidence() const { return diffuseIncidence_; }
+
+ private:
   std::vector<LayerData> layers_;
   AbsorptionScheme scheme_;
   double specularReflectance_ = 0;
@@ -90,6 +103,10 @@ struct SlabRunOptions {
   std::uint64_t photons = 100000;
   std::uint64_t seed = 1;
   AbsorptionScheme scheme = AbsorptionScheme::Analog;
+  /// Weighted scheme only: true traces eight packets at once in single-precision lanes
+  /// (skin/layered_slab_lanes.h, the same laws); false one packet at a time in double precision
+  /// (SlabWalker::trace, the reference the lane walk is tested against).
+  bool laneWalk = true;
 };
 
 /// Totals over all packets, per incident photon. Rd excludes the specular part; Tt includes the

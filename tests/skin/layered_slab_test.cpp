@@ -16,33 +16,20 @@
 #include "skin/core/thread_limit.h"
 #include "skin/fresnel.h"
 #include "skin/layered_slab.h"
+#include "tests/support/slab_problems.h"
 
 using hylios::kPi;
 
 namespace hylios::skin {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInf = test::kSemiInfinite;
+using test::mcmlThreeLayerSample;
+using test::singleLayer;
 // Photons per published-benchmark run (13 runs, ~1.5 s in Release on 2 cores): analog sigma is
 // sqrt(p (1 - p) / N), e.g. 3.0e-4 for Rd ~ 0.1, 4.7e-4 for Tt ~ 0.66, 4.3e-4 for Rd ~ 0.24
 // (the test prints every row's sigma).
 constexpr std::uint64_t kBenchmarkPhotons = 1000000;
-
-SlabProblem singleLayer(double nAbove, SlabLayer layer, double nBelow, double angleDeg = 0) {
-  SlabProblem p;
-  p.refractiveIndexAbove = nAbove;
-  p.refractiveIndexBelow = nBelow;
-  p.layers = {layer};
-  p.incidenceAngleDeg = angleDeg;
-  return p;
-}
-
-// MCML manual Table 6.7 / the MCML sample input: three layers of n = 1.37 in air.
-SlabProblem mcmlThreeLayerSample() {
-  SlabProblem p;
-  p.layers = {{1.37, 1, 100, 0.9, 0.1}, {1.37, 1, 10, 0.0, 0.1}, {1.37, 2, 10, 0.7, 0.2}};
-  return p;
-}
 
 // The problem behind each case_id of the CSV (its columns, or its notes for the 3-layer cases).
 // Albedo/optical-thickness cases use mu_t = 1 cm^-1 and d = tau cm.
@@ -297,16 +284,7 @@ TEST(LayeredSlabTest, TwoGlassLayersMatchAddingRule) {
 // ---- Energy balance ----
 
 std::vector<SlabProblem> energyBalanceProblems() {
-  SlabProblem mismatched;  // layers of different index, TIR inside, oblique beam
-  mismatched.refractiveIndexAbove = 1.0;
-  mismatched.refractiveIndexBelow = 1.33;
-  mismatched.layers = {{1.55, 0.5, 50, 0.8, 0.01},
-                       {1.0, 0, 0, 0, 0.02},
-                       {1.4, 2, 20, -0.3, 0.05},
-                       {1.37, 0.1, 10, 0.95, 0.0},
-                       {1.45, 1, 30, 0.5, kInf}};
-  mismatched.incidenceAngleDeg = 75;
-  return {mcmlThreeLayerSample(), problemForCase("T6.2-mcml"), mismatched};
+  return {mcmlThreeLayerSample(), problemForCase("T6.2-mcml"), test::mismatchedSlab()};
 }
 
 TEST(LayeredSlabTest, AnalogPacketsScoreTheirWholeWeightExactlyOnce) {

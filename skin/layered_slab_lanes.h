@@ -1,0 +1,64 @@
+// The layered slab's weighted walk (implicit capture with roulette, skin/layered_slab.h) for eight
+// packets at once, one per single-precision lane (skin/core/float_lanes.h): the same laws, step
+// for step, as SlabWalker::trace with AbsorptionScheme::WeightWithRoulette, so the same
+// expectations; only the arithmetic (float instead of double) and the random numbers differ.
+//
+// | walk step            | lanes                                                               |
+// |----------------------|---------------------------------------------------------------------|
+// | packet i's numbers   | xoshiro128+ seeded from Rng(seed, 0, i) (skin/core/lane_random.h);  |
+// |                      | its launch direction (diffuse light) drawn from that Rng first      |
+// | free path            | −ln(1 − u), u on the grid k·2⁻²⁴: the exponential law cut at 16.6   |
+// |                      | optical depths (a mass of 6e−8 moved to the cut)                    |
+// | Fresnel coin         | one uniform per boundary meeting (also for matched indices)         |
+// | roulette             | below weight 0.05, survive with P = 1677722/2²⁴ (0.1 on the grid)   |
+// |                      | and carry 1/P: unbiased on the grid                                 |
+// | scattering           | skin/sampling/henyey_greenstein_lanes.h                             |
+// | scores               | a packet's own scores, written at its end to its row                |
+//
+// A lane whose packet ends takes the next packet of the range, so the lanes stay full; each
+// packet's row depends on its index alone, and the caller sums rows in index order: results are
+// the same at any thread count and on every machine (the AVX2 clone and the SSE2 baseline compute
+// the same bits; skin/CMakeLists.txt compiles the file without fused multiply-adds).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "skin/layered_slab.h"
+
+namespace hylios::skin {
+
+class SlabLaneWalker {
+ public:
+  /// Columns of a packet's row of scores.
+  static constexpr std::size_t kDiffuseReflectance = 0, kTransmittance = 1,
+                               kUnscatteredTransmittance = 2, kFirstLayerAbsorptance = 3;
+
+  /// `walker` (kept by reference: it must outlive this) must use AbsorptionScheme::
+  /// WeightWithRoulette; throws std::invalid_argument otherwise.
+  explicit SlabLaneWalker(const SlabWalker& walker);
+
+  /// Scores per packet: the three exits and one absorptance per layer.
+  std::size_t scoresPerPacket() const { return kFirstLayerAbsorptance + layerCount_; }
+
+  /// Traces packets first..last-1 and writes packet i's row at scores + (i − first) · stride.
+  void trace(std::uint64_t seed, std::uint64_t first, std::uint64_t last, double* scores) const;
+
+  const SlabWalker& walker() const { return walker_; }
+
+  /// Per layer (index k) and per boundary (index 2k for leaving k upwards, 2k + 1 downwards).
+  struct Tables {
+    std::vector<float> zTop, zBottom, muT, inverseMuT, absorptionProbability;
+    std::vector<float> g, oneMinusG, twoTimesG, twoOneMinusGSquared, twoOnePlusGSquared;
+    std::vector<float> eta, etaSquared, oneMinusEtaSquared, relativeIndex;
+    std::vector<std::int32_t> matched;
+  };
+
+  const Tables& tables() const { return tables_; }
+
+ private:
+  const SlabWalker& walker_;
+  std::size_t layerCount_;
+  Tables tables_;
+};
+
+}  // namespace hylios::skin

@@ -1,0 +1,130 @@
+// The slab's lane walk (skin/layered_slab_lanes.h) against the exact scalar walk it replaces
+// (SlabWalker::trace, weighted scheme), on stacks that exercise every path of the lanes: the MCML
+// sample, a semi-infinite plate of index 1.5, layers of different index with total internal
+// reflection, a lossless gap and an empty layer, diffuse light, and a 12-layer stack (more than
+// eight layers: the table look-ups gather instead of permuting). Also: energy balance, each
+// packet's row, and the same bytes at one and two threads.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "skin/core/thread_limit.h"
+#include "skin/layered_slab.h"
+#include "skin/layered_slab_lanes.h"
+#include "tests/support/score_family.h"
+#include "tests/support/slab_problems.h"
+
+namespace hylios::skin {
+namespace {
+
+struct NamedProblem {
+  std::string name;
+  SlabProblem problem;
+};
+
+std::vector<NamedProblem> lanesProblems() {
+  SlabProblem diffuse = test::singleLayer(1.0, {1.4, 1, 20, 0.7, 0.1}, 1.2);
+  diffuse.diffuseIncidence = true;
+  SlabProblem twelveLayers;
+  twelveLayers.refractiveIndexBelow = 1.4;
+  for (int k = 0; k < 12; ++k)
+    twelveLayers.layers.push_back(
+        {1.3 + 0.02 * k, 0.5 + 0.2 * k, 30.0 - 2 * k, 0.9 - 0.1 * k, 0.02});
+  twelveLayers.incidenceAngleDeg = 30;
+  return {
+      {"MCML sample", test::mcmlThreeLayerSample()},
+      {"semi-infinite n 1.5", test::singleLayer(1.0, {1.5, 10, 90, 0.0, test::kSemiInfinite}, 1.0)},
+      {"mismatched", test::mismatchedSlab()},
+      {"diffuse light", diffuse},
+      {"twelve layers", twelveLayers}};
+}
+
+SlabResult run(const SlabProblem& problem, bool lanes, std::uint64_t seed, std::uint64_t photons) {
+  SlabRunOptions options;
+  options.photons = photons;
+  options.seed = seed;
+  options.scheme = AbsorptionScheme::WeightWithRoulette;
+  options.laneWalk = lanes;
+  return simulateLayeredSlab(problem, options);
+}
+
+TEST(SlabLaneWalker, MatchesTheScalarWalk) {
+  // 2·10^5 packets each, independent seeds; every quantity of every stack is one score of the
+  // family (difference over the combined standard error), judged at 1 % family-wise.
+  test::ScoreFamily family;
+  for (const NamedProblem& p : lanesProblems()) {
+    const SlabResult lanes = run(p.problem, true, 31, 200000);
+    const SlabResult scalar = run(p.problem, false, 32, 200000);
+    auto compare = [&](const std::string& what, const Estimate& a, const Estimate& b) {
+      family.add(p.name + " " + what,
+                 test::zScore(a.mean - b.mean, std::hypot(a.standardError, b.standardError)));
+    };
+    compare("Rd", lanes.diffuseReflectance, scalar.diffuseReflectance);
+    compare("Tt", lanes.transmittance, scalar.transmittance);
+    compare("unscattered Tt", lanes.unscatteredTransmittance, scalar.unscatteredTransmittance);
+    compare("A", lanes.absorptance, scalar.absorptance);
+    for (std::size_t l = 0; l < lanes.layerAbsorptance.size(); ++l)
+      compare("A layer " + std::to_string(l + 1), lanes.layerAbsorptance[l],
+              scalar.layerAbsorptance[l]);
+    // Same estimator, same variance per packet: the standard errors agree to sampling error
+    // (a standard error from 2·10^5 heavy-tailed weights is good to a few per cent).
+    EXPECT_NEAR(lanes.absorptance.standardError / scalar.absorptance.standardError, 1.0, 0.15)
+        << p.name;
+  }
+  family.expectWithinFamilyWiseBound();
+}
+
+TEST(SlabLaneWalker, BalancesEnergyInExpectation) {
+  for (const NamedProblem& p : lanesProblems()) {
+    const SlabWalker walker(p.problem, AbsorptionScheme::WeightWithRoulette);
+    const SlabLaneWalker lanes(walker);
+    const std::uint64_t packets = 20000;
+    std::vector<double> rows(packets * lanes.scoresPerPacket(), -1.0);
+    lanes.trace(8, 0, packets, rows.data());
+    RunningStatistic total;
+    for (std::uint64_t i = 0; i < packets; ++i) {
+      const double* row = rows.data() + i * lanes.scoresPerPacket();
+      double sum = walker.specularReflectance();
+      int exits = 0;
+      for (std::size_t q = 0; q < lanes.scoresPerPacket(); ++q) {
+        ASSERT_TRUE(std::isfinite(row[q]) && row[q] >= 0.0) << p.name << " packet " << i;
+        if (q != SlabLaneWalker::kUnscatteredTransmittance) sum += row[q];
+      }
+      exits += row[SlabLaneWalker::kDiffuseReflectance] > 0;
+      exits += row[SlabLaneWalker::kTransmittance] > 0;
+      ASSERT_LE(exits, 1) << p.name << " packet " << i;
+      ASSERT_LE(row[SlabLaneWalker::kUnscatteredTransmittance],
+                row[SlabLaneWalker::kTransmittance]);
+      total.add(sum);
+    }
+    // Roulette makes single packets gain or lose weight; the mean is 1.
+    EXPECT_NEAR(total.mean(), 1.0, 4 * total.standardError())
+        << p.name << ", sigma " << total.standardError();
+  }
+}
+
+TEST(SlabLaneWalker, SameBytesAtOneAndTwoThreads) {
+  for (const NamedProblem& p : lanesProblems()) {
+    auto at = [&](int threads) {
+      const ThreadLimit limit(threads);
+      return run(p.problem, true, 12, 30000);  // several chunks of 4096
+    };
+    const SlabResult one = at(1), two = at(2);
+    EXPECT_EQ(one.diffuseReflectance.mean, two.diffuseReflectance.mean) << p.name;
+    EXPECT_EQ(one.diffuseReflectance.standardError, two.diffuseReflectance.standardError);
+    EXPECT_EQ(one.transmittance.mean, two.transmittance.mean) << p.name;
+    EXPECT_EQ(one.absorptance.mean, two.absorptance.mean) << p.name;
+    for (std::size_t l = 0; l < one.layerAbsorptance.size(); ++l)
+      EXPECT_EQ(one.layerAbsorptance[l].mean, two.layerAbsorptance[l].mean) << p.name;
+  }
+}
+
+TEST(SlabLaneWalker, RefusesTheAnalogScheme) {
+  const SlabWalker analog(test::mcmlThreeLayerSample(), AbsorptionScheme::Analog);
+  EXPECT_THROW(SlabLaneWalker{analog}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hylios::skin
