@@ -50,6 +50,8 @@ struct Lanes {
   std::vector<float> absorbed;
 };
 
+constexpr int kGroups = 2;
+
 // How each lane's step ended: absorbed to its end by roulette, or left through the top or bottom.
 struct StepEnds {
   Ints ended, leftTop, leftBottom, scatteredBefore, changedLayer;
@@ -218,6 +220,27 @@ HYLIOS_LANES_INLINE void launch(const SlabLaneWalker& lanes, std::uint64_t seed,
   refreshLayer(lanes.tables(), mask, p);
 }
 
+// Writes the rows of the packets that ended and gives their lanes the next packets.
+HYLIOS_LANES_INLINE void finishPackets(const SlabLaneWalker& lanes, Lanes& p, const StepEnds& ends,
+                                       const Floats& weight, std::uint64_t seed,
+                                       std::uint64_t first, std::uint64_t last, std::uint64_t& next,
+                                       double* scores) {
+  const std::size_t stride = lanes.scoresPerPacket();
+  const std::size_t layers = stride - SlabLaneWalker::kFirstLayerAbsorptance;
+  bookStay(ends.ended, p);
+  for (int l = 0; l < kLanes; ++l) {
+    if (!ends.ended[l]) continue;
+    double* row = scores + (p.packet[l] - first) * stride;
+    row[SlabLaneWalker::kDiffuseReflectance] = ends.leftTop[l] ? weight[l] : 0.0;
+    row[SlabLaneWalker::kTransmittance] = ends.leftBottom[l] ? weight[l] : 0.0;
+    row[SlabLaneWalker::kUnscatteredTransmittance] =
+        ends.leftBottom[l] && !ends.scatteredBefore[l] ? weight[l] : 0.0;
+    for (std::size_t k = 0; k < layers; ++k)
+      row[SlabLaneWalker::kFirstLayerAbsorptance + k] = p.absorbed[k * kLanes + l];
+  }
+  launch(lanes, seed, last, ends.ended, next, p);
+}
+
 }  // namespace
 
 SlabLaneWalker::SlabLaneWalker(const SlabWalker& walker)
@@ -264,29 +287,29 @@ SlabLaneWalker::SlabLaneWalker(const SlabWalker& walker)
 HYLIOS_LANE_CLONES
 void SlabLaneWalker::trace(std::uint64_t seed, std::uint64_t first, std::uint64_t last,
                            double* scores) const {
-  const std::size_t stride = scoresPerPacket();
   const auto lastLayer = static_cast<std::int32_t>(layerCount_ - 1);
-  Lanes p{};
-  p.absorbed.assign(layerCount_ * kLanes, 0.0f);
+  // Two groups of lanes stepped in turn: each step is one long chain of dependent operations, and
+  // the other group's step fills the time its latencies leave.
+  Lanes groups[kGroups];
   std::uint64_t next = first;
   const Ints everyLane = Ints{} - 1;
-  launch(*this, seed, last, everyLane, next, p);
-  while (any(p.active)) {
-    const Floats weight = p.weight;  // the weight a packet leaves with
-    const StepEnds ends = step(tables_, lastLayer, p);
-    if (!any(ends.ended)) continue;
-    bookStay(ends.ended, p);
-    for (int l = 0; l < kLanes; ++l) {
-      if (!ends.ended[l]) continue;
-      double* row = scores + (p.packet[l] - first) * stride;
-      row[kDiffuseReflectance] = ends.leftTop[l] ? weight[l] : 0.0;
-      row[kTransmittance] = ends.leftBottom[l] ? weight[l] : 0.0;
-      row[kUnscatteredTransmittance] =
-          ends.leftBottom[l] && !ends.scatteredBefore[l] ? weight[l] : 0.0;
-      for (std::size_t k = 0; k < layerCount_; ++k)
-        row[kFirstLayerAbsorptance + k] = p.absorbed[k * kLanes + l];
+  for (Lanes& p : groups) {
+    p.absorbed.assign(layerCount_ * kLanes, 0.0f);
+    launch(*this, seed, last, everyLane, next, p);
+  }
+  for (;;) {
+    Ints active = Ints{};
+    for (const Lanes& p : groups) active |= p.active;
+    if (!any(active)) return;
+    Floats weights[kGroups];  // the weights as the packets leave
+    StepEnds ends[kGroups];
+    for (int g = 0; g < kGroups; ++g) {
+      weights[g] = groups[g].weight;
+      ends[g] = step(tables_, lastLayer, groups[g]);
     }
-    launch(*this, seed, last, ends.ended, next, p);
+    for (int g = 0; g < kGroups; ++g)
+      if (any(ends[g].ended))
+        finishPackets(*this, groups[g], ends[g], weights[g], seed, first, last, next, scores);
   }
 }
 
