@@ -290,7 +290,7 @@ void SlabLaneWalker::trace(std::uint64_t seed, std::uint64_t first, std::uint64_
   const auto lastLayer = static_cast<std::int32_t>(layerCount_ - 1);
   // Two groups of lanes stepped in turn: each step is one long chain of dependent operations, and
   // the other group's step fills the time its latencies leave.
-  Lanes groups[kGroups];
+  Lanes groups[kGroups] = {};  // zeros: lanes that never get a packet stay in layer 1 at weight 0
   std::uint64_t next = first;
   const Ints everyLane = Ints{} - 1;
   for (Lanes& p : groups) {
