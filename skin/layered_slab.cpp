@@ -293,7 +293,8 @@ void traceChunkInLanes(const SlabLaneWalker& lanes, std::uint64_t seed, std::uin
 
 SlabResult simulateLayeredSlab(const SlabProblem& problem, const SlabRunOptions& options) {
   const SlabWalker walker(problem, options.scheme);
-  const bool inLanes = options.laneWalk && options.scheme == AbsorptionScheme::WeightWithRoulette;
+  const bool inLanes = options.laneWalk && options.scheme == AbsorptionScheme::WeightWithRoulette &&
+                       SlabLaneWalker::represents(walker);
   const std::optional<SlabLaneWalker> lanes =
       inLanes ? std::optional<SlabLaneWalker>(std::in_place, walker) : std::nullopt;
   const std::size_t quantities = kFirstLayerTally + walker.layerCount();

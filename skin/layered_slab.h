@@ -104,8 +104,9 @@ struct SlabRunOptions {
   std::uint64_t seed = 1;
   AbsorptionScheme scheme = AbsorptionScheme::Analog;
   /// Weighted scheme only: true traces eight packets at once in single-precision lanes
-  /// (skin/layered_slab_lanes.h, the same laws); false one packet at a time in double precision
-  /// (SlabWalker::trace, the reference the lane walk is tested against).
+  /// (skin/layered_slab_lanes.h, the same laws) when single precision represents the stack
+  /// (SlabLaneWalker::represents), else as false; false one packet at a time in double
+  /// precision (SlabWalker::trace, the reference the lane walk is tested against).
   bool laneWalk = true;
 };
 

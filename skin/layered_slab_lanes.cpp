@@ -1,5 +1,6 @@
 #include "skin/layered_slab_lanes.h"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -243,10 +244,31 @@ HYLIOS_LANES_INLINE void finishPackets(const SlabLaneWalker& lanes, Lanes& p, co
 
 }  // namespace
 
+bool SlabLaneWalker::represents(const SlabWalker& walker) {
+  constexpr double kLargest = 1e30, kSmallest = 1e-30, kSmallestRelativeThickness = 0x1.0p-10;
+  const std::vector<SlabWalker::LayerData>& layers = walker.layers();
+  for (std::size_t k = 0; k < layers.size(); ++k) {
+    const SlabWalker::LayerData& layer = layers[k];
+    const double thickness = layer.zBottomCm - layer.zTopCm;
+    const bool semiInfinite = k + 1 == layers.size() && std::isinf(layer.zBottomCm);
+    const double muT = layer.muT_perCm;
+    if (!(muT == 0 || (muT >= kSmallest && muT <= kLargest))) return false;
+    if (semiInfinite || thickness == 0) continue;
+    if (!(layer.zBottomCm <= kLargest && thickness >= kSmallest &&
+          thickness >= kSmallestRelativeThickness * layer.zBottomCm))
+      return false;
+  }
+  return true;
+}
+
 SlabLaneWalker::SlabLaneWalker(const SlabWalker& walker)
     : walker_(walker), layerCount_(walker.layerCount()) {
   if (walker.scheme() != AbsorptionScheme::WeightWithRoulette)
     throw std::invalid_argument("SlabLaneWalker: the lane walk is the weighted scheme only");
+  if (!represents(walker))
+    throw std::invalid_argument(
+        "SlabLaneWalker: the stack needs double precision (a coefficient or depth above 1e30, or "
+        "a layer thinner than 2^-10 of its depth)");
   const auto f = [](double x) { return static_cast<float>(x); };
   for (const SlabWalker::LayerData& layer : walker.layers()) {
     tables_.zTop.push_back(f(layer.zTopCm));

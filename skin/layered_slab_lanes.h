@@ -33,8 +33,16 @@ class SlabLaneWalker {
   static constexpr std::size_t kDiffuseReflectance = 0, kTransmittance = 1,
                                kUnscatteredTransmittance = 2, kFirstLayerAbsorptance = 3;
 
+  /// Whether single precision represents `walker`'s stack: every extinction coefficient 0 or in
+  /// [1e-30, 1e30] cm⁻¹, every depth at most 1e30 cm (the last layer may be semi-infinite), and
+  /// every layer of non-zero thickness at least 1e-30 cm and 2⁻¹⁰ of its bottom depth thick, so
+  /// that its boundaries stay about a thousand float spacings apart. simulateLayeredSlab runs the
+  /// scalar walk for a stack that fails this.
+  static bool represents(const SlabWalker& walker);
+
   /// `walker` (kept by reference: it must outlive this) must use AbsorptionScheme::
-  /// WeightWithRoulette; throws std::invalid_argument otherwise.
+  /// WeightWithRoulette and be represented (represents()); throws std::invalid_argument
+  /// otherwise.
   explicit SlabLaneWalker(const SlabWalker& walker);
 
   /// Scores per packet: the three exits and one absorptance per layer.

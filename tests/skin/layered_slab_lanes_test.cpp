@@ -121,6 +121,31 @@ TEST(SlabLaneWalker, SameBytesAtOneAndTwoThreads) {
   }
 }
 
+TEST(SlabLaneWalker, TakesOnlyStacksThatSinglePrecisionRepresents) {
+  auto represented = [](const SlabProblem& problem) {
+    return SlabLaneWalker::represents(SlabWalker(problem, AbsorptionScheme::WeightWithRoulette));
+  };
+  for (const NamedProblem& p : lanesProblems()) EXPECT_TRUE(represented(p.problem)) << p.name;
+  SlabProblem dense = test::mcmlThreeLayerSample();
+  dense.layers[1].muS_perCm = 2e30;  // beyond 1e30 cm^-1
+  SlabProblem thinDeep = test::mcmlThreeLayerSample();
+  thinDeep.layers[2].thicknessCm = 1e-4;  // 1e-4 cm at 0.2 cm depth: 2^-11 of its depth
+  SlabProblem tiny = test::singleLayer(1.0, {1.4, 1, 10, 0.5, 1e-35}, 1.0);
+  SlabProblem faint = test::singleLayer(1.0, {1.4, 1e-31, 0, 0.5, 0.1}, 1.0);
+  for (const SlabProblem* problem : {&dense, &thinDeep, &tiny, &faint}) {
+    EXPECT_FALSE(represented(*problem));
+    const SlabWalker walker(*problem, AbsorptionScheme::WeightWithRoulette);
+    EXPECT_THROW(SlabLaneWalker{walker}, std::invalid_argument);
+    // simulateLayeredSlab falls back to the scalar walk: the same bytes as asking for it.
+    const SlabResult asked = run(*problem, true, 4, 5000), scalar = run(*problem, false, 4, 5000);
+    EXPECT_EQ(asked.diffuseReflectance.mean, scalar.diffuseReflectance.mean);
+    EXPECT_EQ(asked.absorptance.mean, scalar.absorptance.mean);
+  }
+  SlabProblem thinShallow = test::mcmlThreeLayerSample();
+  thinShallow.layers[0].thicknessCm = 1e-4;  // at its own depth: the whole of it
+  EXPECT_TRUE(represented(thinShallow));
+}
+
 TEST(SlabLaneWalker, RefusesTheAnalogScheme) {
   const SlabWalker analog(test::mcmlThreeLayerSample(), AbsorptionScheme::Analog);
   EXPECT_THROW(SlabLaneWalker{analog}, std::invalid_argument);
