@@ -2,8 +2,9 @@
 // (SlabWalker::trace, weighted scheme), on stacks that exercise every path of the lanes: the MCML
 // sample, a semi-infinite plate of index 1.5, layers of different index with total internal
 // reflection, a lossless gap and an empty layer, diffuse light, and a 12-layer stack (more than
-// eight layers: the table look-ups gather instead of permuting). Also: energy balance, each
-// packet's row, and the same bytes at one and two threads.
+// eight layers: the table look-ups gather instead of permuting). Also: MCML 1.2's own sample
+// output, energy balance, each packet's row, the same bytes at one and two threads, and the
+// fallback to the scalar walk for stacks that single precision does not represent.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -74,6 +75,24 @@ TEST(SlabLaneWalker, MatchesTheScalarWalk) {
         << p.name;
   }
   family.expectWithinFamilyWiseBound();
+}
+
+TEST(SlabLaneWalker, AgreesWithMcmlsOwnSampleOutput) {
+  // MCML 1.2's sample.mco (tests/data/validation/mc_benchmarks_published.csv, mcml12-sample),
+  // 10^6 photons: Rd 0.237544, Tt 0.0964896, A 0.641594, per layer 0.2612 / 0.1488 / 0.2316 (4
+  // digits). Its standard errors are those of the same estimator at 10^6 photons, taken equal to
+  // ours (MCML's per-photon spread, docs/benchmarks.md "Session 11": within 7 % of ours), so the
+  // combined sigma is sqrt(2) of ours (Rd ~4.4e-4); 4 combined sigma, plus the rounding.
+  const SlabResult r = run(test::mcmlThreeLayerSample(), true, 7, 1000000);
+  auto expectNear = [](const Estimate& ours, double published, double rounding, const char* what) {
+    EXPECT_NEAR(ours.mean, published, 4 * std::sqrt(2.0) * ours.standardError + rounding) << what;
+  };
+  expectNear(r.diffuseReflectance, 0.237544, 0, "Rd");
+  expectNear(r.transmittance, 0.0964896, 0, "Tt");
+  expectNear(r.absorptance, 0.641594, 0, "A");
+  const double perLayer[3] = {0.2612, 0.1488, 0.2316};
+  for (std::size_t l = 0; l < 3; ++l) expectNear(r.layerAbsorptance[l], perLayer[l], 5e-5, "A_l");
+  EXPECT_NEAR(r.specularReflectance, 0.0243729, 1e-7);
 }
 
 TEST(SlabLaneWalker, BalancesEnergyInExpectation) {
