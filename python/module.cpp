@@ -65,4 +65,5 @@ PYBIND11_MODULE(_hylios, m) {
   bindAngular(m);
   bindRender(m);
   bindFit(m);
+  bindSlab(m);
 }

@@ -16,5 +16,7 @@ void bindAngular(pybind11::module_& m);
 void bindRender(pybind11::module_& m);
 /// python/module_fit.cpp: fit_quantities, fit.
 void bindFit(pybind11::module_& m);
+/// python/module_slab.cpp: slab.
+void bindSlab(pybind11::module_& m);
 
 }  // namespace hylios::python

@@ -29,7 +29,7 @@ from ._hylios import FitError, SceneError, SpecimenError
 
 __all__ = [
     "Specimen", "SpecimenError", "SceneError", "FitError", "Result", "spectrum", "coefficients",
-    "brdf", "radial_profile", "render", "fit", "fit_quantities", "override_keys", "layer_names", "absorber_names", "data_root",
+    "brdf", "radial_profile", "slab", "render", "fit", "fit_quantities", "override_keys", "layer_names", "absorber_names", "data_root",
 ]
 
 
@@ -294,6 +294,53 @@ def radial_profile(specimen, wavelength_nm=550, angle_deg=0, rays=1000000, seed=
     for key in ("beyond_max_radius", "subsurface_reflectance"):
         values[key] = (d[key]["mean"], d[key]["stderr"])
     return Result("RadialProfile", values)
+
+
+def _slab_layer(index, layer):
+    """(n, mua, mus, g, d) from a dict with those keys or a 5-sequence, as ``--layer`` takes it."""
+    keys = ("n", "mua", "mus", "g", "d")
+    if isinstance(layer, dict):
+        unknown = sorted(set(layer) - set(keys))
+        missing = [k for k in keys if k not in layer]
+        if unknown or missing:
+            raise ValueError("layers[%d]: expected the keys n, mua, mus, g, d%s%s" % (
+                index, "; unknown: " + ", ".join(map(str, unknown)) if unknown else "",
+                "; missing: " + ", ".join(missing) if missing else ""))
+        values = [layer[k] for k in keys]
+    else:
+        values = list(layer)
+        if len(values) != 5:
+            raise ValueError("layers[%d]: expected (n, mua, mus, g, d), got %d values" % (index, len(values)))
+    return tuple(float(v) for v in values)
+
+
+def slab(layers, above=1.0, below=1.0, angle_deg=0, diffuse=False, rays=1000000, seed=1,
+         scheme="weighted", scalar=False, threads=0):
+    """Monte Carlo of a layered slab, MCML's problem (``hylios slab``): diffuse reflectance,
+    transmittance and absorptance per layer of plane-parallel Henyey-Greenstein layers between
+    two ambient media, lit by a pencil beam (or diffuse light).
+
+    layers: top first, each a dict ``{"n", "mua", "mus", "g", "d"}`` or a tuple in that order
+    (refractive index, absorption and scattering coefficients in 1/cm, anisotropy in (-1, 1),
+    thickness in cm; the last layer may be ``float("inf")``); above/below: ambient indices;
+    angle_deg: beam incidence in [0, 90); diffuse: Lambertian light instead of the beam; rays:
+    photon packets; seed: the same seed gives the same numbers at any thread count; scheme:
+    "weighted" (absorption as weight with roulette, MCML's implicit capture) or "analog";
+    scalar: the weighted walk one packet at a time in double precision instead of eight at once
+    in single-precision lanes (the same laws; skin/layered_slab_lanes.h); threads: 0 = all cores.
+
+    Returns a ``Result`` with ``specular_reflectance``, ``diffuse_reflectance``,
+    ``transmittance``, ``unscattered_transmittance``, ``diffuse_transmittance``, ``absorptance``
+    (each with ``_stderr`` but the specular part), arrays ``layer_absorptance`` and
+    ``layer_absorptance_stderr``, and ``photons``.
+    """
+    if isinstance(layers, dict) or not hasattr(layers, "__iter__"):
+        raise TypeError("layers: expected a sequence of layers, got %r" % (layers,))
+    tuples = [_slab_layer(i, layer) for i, layer in enumerate(layers)]
+    d = _hylios.slab(tuples, float(above), float(below), float(angle_deg), bool(diffuse),
+                     _count("rays", rays), _seed(seed), str(scheme), bool(scalar),
+                     _count("threads", threads))
+    return Result("Slab", dict(d))
 
 
 def render(scene_path, spp=None, noise_target=None, resolution=None, seed=None, threads=0,

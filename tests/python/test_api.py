@@ -75,6 +75,29 @@ def test_errors_carry_the_command_line_messages(tmp_path):
         hylios.spectrum(42, [550])
 
 
+def test_slab_errors_name_the_layer(tmp_path):
+    good = {"n": 1.37, "mua": 1, "mus": 10, "g": 0.5, "d": 0.1}
+    with pytest.raises(ValueError) as e:
+        hylios.slab([good, dict(good, mus=-1)])
+    assert str(e.value) == "layer 2: mus must be finite and >= 0, got -1"
+    with pytest.raises(ValueError) as e:
+        hylios.slab([dict(good, mu_a=1)])
+    assert str(e.value) == "layers[0]: expected the keys n, mua, mus, g, d; unknown: mu_a"
+    with pytest.raises(ValueError) as e:
+        hylios.slab([(1.37, 1, 10, 0.5)])
+    assert str(e.value) == "layers[0]: expected (n, mua, mus, g, d), got 4 values"
+    with pytest.raises(ValueError) as e:
+        hylios.slab([good], angle_deg=95)
+    assert str(e.value) == "angle_deg must lie in [0, 90)"
+    with pytest.raises(ValueError):
+        hylios.slab([good], scheme="nonsense")
+    with pytest.raises(ValueError) as e:
+        hylios.slab([])
+    assert str(e.value) == "slab: at least one layer is needed"
+    with pytest.raises(TypeError):
+        hylios.slab(good)
+
+
 def test_scene_errors_name_file_line_column(tmp_path):
     scene = tmp_path / "broken.toml"
     scene.write_text((SOURCE_DIR / "scenes" / "test" / "skin_sphere_550.toml").read_text()
@@ -143,6 +166,7 @@ def test_gil_is_released_during_a_call():
     ("hylios.spectrum('S1', '250:2500:5', rays=10**6, estimator='per-wavelength')", 30),
     ("hylios.radial_profile('S1', rays=10**7, estimator='per-wavelength')", 30),
     ("hylios.brdf('S1', '380:780:10', rays=3 * 10**6, estimator='per-wavelength')", 30),
+    ("hylios.slab([(1.37, 1, 100, 0.9, 0.1)], rays=10**10)", 30),
 ])
 def test_ctrl_c_interrupts_a_long_call(call, latency_s):
     script = textwrap.dedent("""

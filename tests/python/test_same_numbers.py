@@ -136,3 +136,35 @@ def test_brdf_matches_command(tmp_path, estimator):
             for part in ("surface", "subsurface", "total"):
                 assert row["%s_%s" % (part, quantity)] == printed(getattr(parts, part)[i, j])
                 assert row["%s_%s_stderr" % (part, quantity)] == printed(getattr(parts, part + "_stderr")[i, j])
+
+
+SLAB_LAYERS = [{"n": 1.37, "mua": 1, "mus": 100, "g": 0.9, "d": 0.1},
+               {"n": 1.37, "mua": 1, "mus": 10, "g": 0, "d": 0.1},
+               (1.37, 2, 10, 0.7, 0.2)]
+
+
+@pytest.mark.parametrize("extra,kwargs", [
+    ([], {}),                                    # the weighted walk in lanes (the default)
+    (["--scalar"], {"scalar": True}),            # one packet at a time, double precision
+    (["--scheme", "analog"], {"scheme": "analog"}),
+    (["--diffuse", "--below", "1.4"], {"diffuse": True, "below": 1.4}),
+])
+def test_slab_matches_command(tmp_path, extra, kwargs):
+    out = tmp_path / "slab.csv"
+    layer_args = []
+    for layer in SLAB_LAYERS:
+        n, mua, mus, g, d = (layer[k] for k in ("n", "mua", "mus", "g", "d")) if isinstance(layer, dict) else layer
+        layer_args += ["--layer", "n=%r,mua=%r,mus=%r,g=%r,d=%r" % (n, mua, mus, g, d)]
+    run_hylios("slab", *layer_args, "--rays", "20000", "--seed", "5", "--out", out, *extra)
+    result = hylios.slab(SLAB_LAYERS, rays=20000, seed=5, **kwargs)
+    row = read_csv(out)[0]
+    columns = ["specular_reflectance", "diffuse_reflectance", "diffuse_reflectance_stderr",
+               "transmittance", "transmittance_stderr", "unscattered_transmittance", "absorptance",
+               "absorptance_stderr"]
+    for column in columns:  # the command prints 9 significant digits
+        assert float(row[column]) == pytest.approx(getattr(result, column), rel=1e-8, abs=1e-300), column
+    for i in range(3):
+        assert float(row["absorptance_layer%d" % (i + 1)]) == pytest.approx(
+            result.layer_absorptance[i], rel=1e-8, abs=1e-300)
+        assert float(row["absorptance_layer%d_stderr" % (i + 1)]) == pytest.approx(
+            result.layer_absorptance_stderr[i], rel=1e-8, abs=1e-300)
