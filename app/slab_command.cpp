@@ -45,6 +45,8 @@ std::string csvFor(const skin::SlabResult& r) {
     row += fmt::format(",{:.9g},{:.9g}", r.layerAbsorptance[l].mean,
                        r.layerAbsorptance[l].standardError);
   }
+  header += ",event_limited";
+  row += fmt::format(",{:.9g}", r.eventLimited.mean);
   return header + "\n" + row + "\n";
 }
 
@@ -66,6 +68,12 @@ void runSlab(const SlabOptions& o) {
   const ThreadLimit threadLimit(o.threads);
   const skin::SlabResult result = skin::simulateLayeredSlab(problem, run);
   writeTextAtomically(o.out, csvFor(result));
+  if (result.eventLimited.mean > 0)
+    std::cerr << fmt::format(
+        "hylios: warning: {:.3g} of the incident light was still travelling after {} events per "
+        "packet (a thick layer that scatters and hardly absorbs); it is in the CSV's "
+        "event_limited, not in Rd, Tt or A\n",
+        result.eventLimited.mean, skin::kSlabEventLimit);
   std::cout << fmt::format(
       "Rsp {:.6f}  Rd {:.6f} ± {:.6f}  Tt {:.6f} ± {:.6f}  A {:.6f} ± {:.6f}  -> {}\n",
       result.specularReflectance, result.diffuseReflectance.mean,

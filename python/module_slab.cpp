@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "skin/core/enum_names.h"
 #include "python/argument_checks.h"
 #include "python/interruptible.h"
 #include "python/module.h"
 #include "python/numpy_conversions.h"
+#include "skin/core/enum_names.h"
 #include "skin/core/thread_limit.h"
 #include "skin/layered_slab.h"
 
@@ -62,6 +62,7 @@ py::dict slab(const std::vector<LayerTuple>& layers, double nAbove, double nBelo
   put("unscattered_transmittance", result.unscatteredTransmittance);
   put("diffuse_transmittance", result.diffuseTransmittance);
   put("absorptance", result.absorptance);
+  put("event_limited", result.eventLimited);
   std::vector<double> perLayer, perLayerErr;
   for (const skin::Estimate& e : result.layerAbsorptance) {
     perLayer.push_back(e.mean);

@@ -116,8 +116,11 @@ void validateSlabProblem(const SlabProblem& problem) {
   }
 }
 
-SlabWalker::SlabWalker(const SlabProblem& problem, AbsorptionScheme scheme) : scheme_(scheme) {
+SlabWalker::SlabWalker(const SlabProblem& problem, AbsorptionScheme scheme,
+                       std::uint32_t eventLimit)
+    : scheme_(scheme), eventLimit_(eventLimit) {
   validateSlabProblem(problem);
+  if (eventLimit < 1) throw std::invalid_argument("slab: the event limit must be at least 1");
   double z = 0.0;
   const std::size_t count = problem.layers.size();
   for (std::size_t i = 0; i < count; ++i) {
@@ -172,6 +175,7 @@ Vec3 SlabWalker::launchDirection(Rng& rng) const {
 
 void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
   scores.diffuseReflectance = scores.transmittance = scores.unscatteredTransmittance = 0.0;
+  scores.eventLimited = 0.0;
   scores.layerAbsorptance.assign(layers_.size(), 0.0);
   const std::size_t lastLayer = layers_.size() - 1;
   const bool analog = scheme_ == AbsorptionScheme::Analog;
@@ -180,7 +184,12 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
   double z = 0.0;
   std::size_t k = 0;
   bool scattered = false;
+  std::uint32_t events = 0;
   for (;;) {
+    if (++events > eventLimit_) {
+      scores.eventLimited = weight;
+      return;
+    }
     // Optical depth to the next interaction, Exp(1) (equivalent to the paper's Eq. 1 minimum over
     // processes). 1 - uniform() is in (0, 1], so the log is finite.
     double opticalDepth = -std::log(1.0 - rng.uniform());
@@ -197,6 +206,10 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
       }
       if (distanceToBoundary == kInfinity)  // unreachable: validation and Snell forbid it
         throw std::logic_error("slab walk: photon travels forever in a lossless layer");
+      if (++events > eventLimit_) {
+        scores.eventLimited = weight;
+        return;
+      }
       opticalDepth -= layer.muT_perCm * distanceToBoundary;
       const bool down = u.z > 0.0;
       z = down ? layer.zBottomCm : layer.zTopCm;
@@ -243,17 +256,18 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
 namespace {
 
 // Per-chunk accumulators: [0] Rd, [1] Tt, [2] unscattered Tt, [3] diffuse Tt, [4] total A,
-// [5 + l] A of layer l.
+// [5] event-limited, [6 + l] A of layer l.
 using Tally = std::vector<RunningStatistic>;
-constexpr std::size_t kFirstLayerTally = 5;
+constexpr std::size_t kEventLimitedTally = 5, kFirstLayerTally = 6;
 
 void addPacket(Tally& tally, double diffuseReflectance, double transmittance,
-               double unscatteredTransmittance, const double* layerAbsorptance,
+               double unscatteredTransmittance, double eventLimited, const double* layerAbsorptance,
                std::size_t layers) {
   tally[0].add(diffuseReflectance);
   tally[1].add(transmittance);
   tally[2].add(unscatteredTransmittance);
   tally[3].add(transmittance - unscatteredTransmittance);
+  tally[kEventLimitedTally].add(eventLimited);
   double absorbed = 0.0;
   for (std::size_t l = 0; l < layers; ++l) {
     absorbed += layerAbsorptance[l];
@@ -269,7 +283,7 @@ void traceChunk(const SlabWalker& walker, std::uint64_t seed, std::uint64_t firs
     Rng rng(seed, 0, i);
     walker.trace(rng, scores);
     addPacket(tally, scores.diffuseReflectance, scores.transmittance,
-              scores.unscatteredTransmittance, scores.layerAbsorptance.data(),
+              scores.unscatteredTransmittance, scores.eventLimited, scores.layerAbsorptance.data(),
               scores.layerAbsorptance.size());
   }
 }
@@ -283,7 +297,7 @@ void traceChunkInLanes(const SlabLaneWalker& lanes, std::uint64_t seed, std::uin
   for (std::size_t i = 0; i < last - first; ++i) {
     const double* row = rows.data() + i * stride;
     addPacket(tally, row[SlabLaneWalker::kDiffuseReflectance], row[SlabLaneWalker::kTransmittance],
-              row[SlabLaneWalker::kUnscatteredTransmittance],
+              row[SlabLaneWalker::kUnscatteredTransmittance], row[SlabLaneWalker::kEventLimited],
               row + SlabLaneWalker::kFirstLayerAbsorptance,
               stride - SlabLaneWalker::kFirstLayerAbsorptance);
   }
@@ -292,7 +306,7 @@ void traceChunkInLanes(const SlabLaneWalker& lanes, std::uint64_t seed, std::uin
 }  // namespace
 
 SlabResult simulateLayeredSlab(const SlabProblem& problem, const SlabRunOptions& options) {
-  const SlabWalker walker(problem, options.scheme);
+  const SlabWalker walker(problem, options.scheme, options.eventLimit);
   const bool inLanes = options.laneWalk && options.scheme == AbsorptionScheme::WeightWithRoulette &&
                        SlabLaneWalker::represents(walker);
   const std::optional<SlabLaneWalker> lanes =
@@ -326,6 +340,7 @@ SlabResult simulateLayeredSlab(const SlabProblem& problem, const SlabRunOptions&
   result.unscatteredTransmittance = total[2].estimate();
   result.diffuseTransmittance = total[3].estimate();
   result.absorptance = total[4].estimate();
+  result.eventLimited = total[kEventLimitedTally].estimate();
   for (std::size_t l = 0; l < walker.layerCount(); ++l)
     result.layerAbsorptance.push_back(total[kFirstLayerTally + l].estimate());
   result.photons = options.photons;

@@ -53,17 +53,26 @@ inline constexpr EnumNames<AbsorptionScheme, 2> kAbsorptionSchemeNames{
 
 /// One packet's scores, in units of the incident power (the specular part is not in them).
 struct PhotonScores {
-  double diffuseReflectance = 0;         ///< weight leaving through the top surface
-  double transmittance = 0;              ///< weight leaving through the bottom surface
-  double unscatteredTransmittance = 0;   ///< the part of transmittance that never scattered
+  double diffuseReflectance = 0;        ///< weight leaving through the top surface
+  double transmittance = 0;             ///< weight leaving through the bottom surface
+  double unscatteredTransmittance = 0;  ///< the part of transmittance that never scattered
+  double eventLimited = 0;  ///< weight still travelling after kSlabEventLimit events (not scored)
   std::vector<double> layerAbsorptance;  ///< weight absorbed per layer
 };
+
+/// Events (interactions and boundary meetings) after which a packet is stopped and its weight
+/// booked as event-limited instead of reflected, transmitted or absorbed: a termination guarantee
+/// for stacks that a packet would need billions of steps to leave (a thick layer that scatters
+/// and never absorbs), as the skin walk's bound (docs/interpretations.md, "Event bound (slab)").
+inline constexpr std::uint32_t kSlabEventLimit = std::uint32_t{1} << 20;
 
 /// Traces single packets through a validated problem. Immutable after construction, so one walker
 /// serves all threads.
 class SlabWalker {
  public:
-  SlabWalker(const SlabProblem& problem, AbsorptionScheme scheme);
+  /// eventLimit: events after which a packet stops as event-limited (>= 1; kSlabEventLimit).
+  SlabWalker(const SlabProblem& problem, AbsorptionScheme scheme,
+             std::uint32_t eventLimit = kSlabEventLimit);
   /// Fresnel reflectance of the top surface for the incoming light (deterministic: for diffuse
   /// light the hemispherical average 2 * integral of R(mu) mu dmu); packets start inside with
   /// weight 1 - specularReflectance().
@@ -88,10 +97,12 @@ class SlabWalker {
   const std::vector<LayerData>& layers() const { return layers_; }
   AbsorptionScheme scheme() const { return scheme_; }
   bool diffuseIncidence() const { return diffuseIncidence_; }
+  std::uint32_t eventLimit() const { return eventLimit_; }
 
  private:
   std::vector<LayerData> layers_;
   AbsorptionScheme scheme_;
+  std::uint32_t eventLimit_;
   double specularReflectance_ = 0;
   double launchWeight_ = 1;
   double launchSinTheta_ = 0, launchCosTheta_ = 1;
@@ -108,15 +119,18 @@ struct SlabRunOptions {
   /// (SlabLaneWalker::represents), else as false; false one packet at a time in double
   /// precision (SlabWalker::trace, the reference the lane walk is tested against).
   bool laneWalk = true;
+  /// Events after which a packet stops as event-limited (>= 1); smaller only in tests.
+  std::uint32_t eventLimit = kSlabEventLimit;
 };
 
 /// Totals over all packets, per incident photon. Rd excludes the specular part; Tt includes the
-/// unscattered beam. specular + Rd + Tt + absorptance = 1 (exactly per packet for Analog, in
-/// expectation for WeightWithRoulette).
+/// unscattered beam. specular + Rd + Tt + absorptance + eventLimited = 1 (exactly per packet for
+/// Analog, in expectation for WeightWithRoulette).
 struct SlabResult {
   double specularReflectance = 0;
   Estimate diffuseReflectance, transmittance, unscatteredTransmittance, absorptance;
   Estimate diffuseTransmittance;  ///< transmittance - unscatteredTransmittance
+  Estimate eventLimited;  ///< weight stopped by kSlabEventLimit (0 for every sensible stack)
   std::vector<Estimate> layerAbsorptance;
   std::uint64_t photons = 0;
 };

@@ -44,7 +44,7 @@ struct LayerLanes {
 // its present stay; absorbedHere the stay's own.
 struct Lanes {
   Floats z, ux, uy, uz, weight, opticalDepth, absorbedHere;
-  Ints layer, needsDepth, scattered, active;
+  Ints layer, needsDepth, scattered, active, events;
   LayerLanes constants;
   LaneRng rng;
   std::uint64_t packet[kLanes];
@@ -55,7 +55,7 @@ constexpr int kGroups = 2;
 
 // How each lane's step ended: absorbed to its end by roulette, or left through the top or bottom.
 struct StepEnds {
-  Ints ended, leftTop, leftBottom, scatteredBefore, changedLayer;
+  Ints ended, leftTop, leftBottom, eventLimited, scatteredBefore, changedLayer;
 };
 
 // table[index] per lane; `small`: the table has at most eight entries (padded to eight).
@@ -127,8 +127,12 @@ HYLIOS_LANES_INLINE BoundaryMeeting meetBoundary(const SlabLaneWalker::Tables& t
 // or a meeting with the layer's boundary (Fresnel reflection or refraction into the next layer or
 // out of the stack), as SlabWalker::trace does for one packet.
 HYLIOS_LANES_INLINE StepEnds step(const SlabLaneWalker::Tables& t, std::int32_t lastLayer,
-                                  Lanes& p) {
+                                  std::int32_t eventLimit, Lanes& p) {
   const LayerLanes& c = p.constants;
+  // As the scalar walk: a packet at its (event limit + 1)-th event stops with its weight.
+  p.events += 1;
+  const Ints limited = p.active & (p.events > eventLimit);
+  const Ints going = p.active & ~limited;
   const Floats u0 = p.rng.uniform(), u1 = p.rng.uniform(), u2 = p.rng.uniform();
   const Floats u3 = p.rng.uniform();  // the Fresnel coin, or the roulette's (never both)
   const Floats opticalDepth = select(p.needsDepth, -laneLog(1.0f - u0), p.opticalDepth);
@@ -141,7 +145,7 @@ HYLIOS_LANES_INLINE StepEnds step(const SlabLaneWalker::Tables& t, std::int32_t 
 
   // Scattering: implicit capture, roulette, a Henyey–Greenstein turn.
   const Floats zInside = p.z + p.uz * (opticalDepth * c.inverseMuT);
-  const Floats deposit = select(interacts, p.weight * c.absorptionProbability, Floats{});
+  const Floats deposit = select(interacts & ~limited, p.weight * c.absorptionProbability, Floats{});
   p.absorbedHere += deposit;
   const Floats kept = p.weight - deposit;
   const Ints low = kept < kRouletteThreshold;
@@ -155,14 +159,15 @@ HYLIOS_LANES_INLINE StepEnds step(const SlabLaneWalker::Tables& t, std::int32_t 
 
   StepEnds ends{};
   ends.scatteredBefore = p.scattered;
-  ends.ended = p.active & interacts & low & ~survives;
+  ends.eventLimited = limited;
+  ends.ended = (going & interacts & low & ~survives) | limited;
   p.z = select(interacts, zInside, boundaryZ);
   p.opticalDepth = select(interacts, Floats{}, opticalDepth - depthToBoundary);
   p.weight = select(interacts, keptAfterRoulette, p.weight);
   p.needsDepth = interacts;
   p.scattered = p.scattered | interacts;
   const BoundaryMeeting meeting = meetBoundary(t, down, p.uz, u3, p);
-  const Ints crosses = ~interacts & ~meeting.reflects & p.active;
+  const Ints crosses = ~interacts & ~meeting.reflects & going;
   ends.leftTop = crosses & ~down & (p.layer == 0);
   ends.leftBottom = crosses & down & (p.layer == lastLayer);
   ends.ended |= ends.leftTop | ends.leftBottom;
@@ -195,6 +200,7 @@ HYLIOS_LANES_INLINE void launch(const SlabLaneWalker& lanes, std::uint64_t seed,
   p.opticalDepth = select(mask, Floats{}, p.opticalDepth);
   p.absorbedHere = select(mask, Floats{}, p.absorbedHere);
   p.layer = selectInt(mask, Ints{}, p.layer);
+  p.events = selectInt(mask, Ints{}, p.events);
   p.needsDepth |= mask;
   p.scattered &= ~mask;
   p.active |= mask;
@@ -236,6 +242,7 @@ HYLIOS_LANES_INLINE void finishPackets(const SlabLaneWalker& lanes, Lanes& p, co
     row[SlabLaneWalker::kTransmittance] = ends.leftBottom[l] ? weight[l] : 0.0;
     row[SlabLaneWalker::kUnscatteredTransmittance] =
         ends.leftBottom[l] && !ends.scatteredBefore[l] ? weight[l] : 0.0;
+    row[SlabLaneWalker::kEventLimited] = ends.eventLimited[l] ? weight[l] : 0.0;
     for (std::size_t k = 0; k < layers; ++k)
       row[SlabLaneWalker::kFirstLayerAbsorptance + k] = p.absorbed[k * kLanes + l];
   }
@@ -246,6 +253,7 @@ HYLIOS_LANES_INLINE void finishPackets(const SlabLaneWalker& lanes, Lanes& p, co
 
 bool SlabLaneWalker::represents(const SlabWalker& walker) {
   constexpr double kLargest = 1e30, kSmallest = 1e-30, kSmallestRelativeThickness = 0x1.0p-10;
+  if (walker.eventLimit() > 0x7fffffffu) return false;  // the lanes count events in int32
   const std::vector<SlabWalker::LayerData>& layers = walker.layers();
   for (std::size_t k = 0; k < layers.size(); ++k) {
     const SlabWalker::LayerData& layer = layers[k];
@@ -268,7 +276,7 @@ SlabLaneWalker::SlabLaneWalker(const SlabWalker& walker)
   if (!represents(walker))
     throw std::invalid_argument(
         "SlabLaneWalker: the stack needs double precision (a coefficient or depth above 1e30, or "
-        "a layer thinner than 2^-10 of its depth)");
+        "a layer thinner than 2^-10 of its depth) or the event limit is 2^31 or more");
   const auto f = [](double x) { return static_cast<float>(x); };
   for (const SlabWalker::LayerData& layer : walker.layers()) {
     tables_.zTop.push_back(f(layer.zTopCm));
@@ -310,6 +318,8 @@ HYLIOS_LANE_CLONES
 void SlabLaneWalker::trace(std::uint64_t seed, std::uint64_t first, std::uint64_t last,
                            double* scores) const {
   const auto lastLayer = static_cast<std::int32_t>(layerCount_ - 1);
+  // At most 2^31 - 1: represents() checks it.
+  const auto eventLimit = static_cast<std::int32_t>(walker_.eventLimit());
   // Two groups of lanes stepped in turn: each step is one long chain of dependent operations, and
   // the other group's step fills the time its latencies leave.
   Lanes groups[kGroups] = {};  // zeros: lanes that never get a packet stay in layer 1 at weight 0
@@ -327,7 +337,7 @@ void SlabLaneWalker::trace(std::uint64_t seed, std::uint64_t first, std::uint64_
     StepEnds ends[kGroups];
     for (int g = 0; g < kGroups; ++g) {
       weights[g] = groups[g].weight;
-      ends[g] = step(tables_, lastLayer, groups[g]);
+      ends[g] = step(tables_, lastLayer, eventLimit, groups[g]);
     }
     for (int g = 0; g < kGroups; ++g)
       if (any(ends[g].ended))

@@ -31,13 +31,14 @@ class SlabLaneWalker {
  public:
   /// Columns of a packet's row of scores.
   static constexpr std::size_t kDiffuseReflectance = 0, kTransmittance = 1,
-                               kUnscatteredTransmittance = 2, kFirstLayerAbsorptance = 3;
+                               kUnscatteredTransmittance = 2, kEventLimited = 3,
+                               kFirstLayerAbsorptance = 4;
 
   /// Whether single precision represents `walker`'s stack: every extinction coefficient 0 or in
   /// [1e-30, 1e30] cm⁻¹, every depth at most 1e30 cm (the last layer may be semi-infinite), and
   /// every layer of non-zero thickness at least 1e-30 cm and 2⁻¹⁰ of its bottom depth thick, so
-  /// that its boundaries stay about a thousand float spacings apart. simulateLayeredSlab runs the
-  /// scalar walk for a stack that fails this.
+  /// that its boundaries stay about a thousand float spacings apart; and an event limit below
+  /// 2³¹. simulateLayeredSlab runs the scalar walk for a stack that fails this.
   static bool represents(const SlabWalker& walker);
 
   /// `walker` (kept by reference: it must outlive this) must use AbsorptionScheme::
@@ -45,7 +46,8 @@ class SlabLaneWalker {
   /// otherwise.
   explicit SlabLaneWalker(const SlabWalker& walker);
 
-  /// Scores per packet: the three exits and one absorptance per layer.
+  /// Scores per packet: the three exits, the event-limited weight (kSlabEventLimit, as the
+  /// scalar walk) and one absorptance per layer.
   std::size_t scoresPerPacket() const { return kFirstLayerAbsorptance + layerCount_; }
 
   /// Traces packets first..last-1 and writes packet i's row at scores + (i − first) · stride.

@@ -330,9 +330,10 @@ def slab(layers, above=1.0, below=1.0, angle_deg=0, diffuse=False, rays=1000000,
     in single-precision lanes (the same laws; skin/layered_slab_lanes.h); threads: 0 = all cores.
 
     Returns a ``Result`` with ``specular_reflectance``, ``diffuse_reflectance``,
-    ``transmittance``, ``unscattered_transmittance``, ``diffuse_transmittance``, ``absorptance``
-    (each with ``_stderr`` but the specular part), arrays ``layer_absorptance`` and
-    ``layer_absorptance_stderr``, and ``photons``.
+    ``transmittance``, ``unscattered_transmittance``, ``diffuse_transmittance``, ``absorptance``,
+    ``event_limited`` (weight still travelling after 2^20 events per packet: 0 unless a thick
+    layer scatters without absorbing; each with ``_stderr`` but the specular part), arrays
+    ``layer_absorptance`` and ``layer_absorptance_stderr``, and ``photons``.
     """
     if isinstance(layers, dict) or not hasattr(layers, "__iter__"):
         raise TypeError("layers: expected a sequence of layers, got %r" % (layers,))

@@ -48,9 +48,9 @@ TEST(SlabCommandTest, WritesOneRowMatchingTheLibrary) {
             "specular_reflectance,diffuse_reflectance,diffuse_reflectance_stderr,transmittance,"
             "transmittance_stderr,unscattered_transmittance,absorptance,absorptance_stderr,"
             "absorptance_layer1,absorptance_layer1_stderr,absorptance_layer2,"
-            "absorptance_layer2_stderr");
+            "absorptance_layer2_stderr,event_limited");
   const std::vector<std::string> fields = splitCsvLine(row);
-  ASSERT_EQ(fields.size(), 12u);
+  ASSERT_EQ(fields.size(), 13u);
 
   skin::SlabProblem problem;
   problem.layers = {{1.37, 1, 100, 0.9, 0.1},
@@ -72,10 +72,30 @@ TEST(SlabCommandTest, WritesOneRowMatchingTheLibrary) {
                              r.layerAbsorptance[0].mean,
                              r.layerAbsorptance[0].standardError,
                              r.layerAbsorptance[1].mean,
-                             r.layerAbsorptance[1].standardError};
+                             r.layerAbsorptance[1].standardError,
+                             r.eventLimited.mean};
   for (std::size_t i = 0; i < fields.size(); ++i)  // printed with 9 significant digits
     EXPECT_NEAR(std::stod(fields[i]), expected[i], 1e-8 * std::fabs(expected[i]) + 1e-15) << i;
   EXPECT_EQ(r.transmittance.mean, 0.0);  // semi-infinite bottom
+  EXPECT_EQ(r.eventLimited.mean, 0.0);
+  std::filesystem::remove(out);
+}
+
+TEST(SlabCommandTest, WarnsWhenPacketsReachTheEventBound) {
+  // 10^6 optical depths that only scatter: some of 2000 packets reach 2^20 events (seed 3: 3).
+  const std::filesystem::path out =
+      std::filesystem::path(HYLIOS_BINARY_DIR) / "slab_command_test_deep.csv";
+  testing::internal::CaptureStderr();
+  runCommand({"slab", "--layer", "n=1,mua=0,mus=1e6,g=0,d=1", "--rays", "2000", "--seed", "3",
+              "--out", out.string()});
+  const std::string warning = testing::internal::GetCapturedStderr();
+  EXPECT_NE(warning.find("still travelling after 1048576 events"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("event_limited, not in Rd, Tt or A"), std::string::npos) << warning;
+  std::ifstream in(out);
+  std::string header, row;
+  ASSERT_TRUE(std::getline(in, header));
+  ASSERT_TRUE(std::getline(in, row));
+  EXPECT_EQ(splitCsvLine(row).back(), "0.0015");
   std::filesystem::remove(out);
 }
 

@@ -3,8 +3,9 @@
 // sample, a semi-infinite plate of index 1.5, layers of different index with total internal
 // reflection, a lossless gap and an empty layer, diffuse light, and a 12-layer stack (more than
 // eight layers: the table look-ups gather instead of permuting). Also: MCML 1.2's own sample
-// output, energy balance, each packet's row, the same bytes at one and two threads, and the
-// fallback to the scalar walk for stacks that single precision does not represent.
+// output, the event limit, energy balance, each packet's row, the same bytes at one and two
+// threads, and the fallback to the scalar walk for stacks that single precision does not
+// represent.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,8 +43,10 @@ std::vector<NamedProblem> lanesProblems() {
       {"twelve layers", twelveLayers}};
 }
 
-SlabResult run(const SlabProblem& problem, bool lanes, std::uint64_t seed, std::uint64_t photons) {
+SlabResult run(const SlabProblem& problem, bool lanes, std::uint64_t seed, std::uint64_t photons,
+               std::uint32_t eventLimit = kSlabEventLimit) {
   SlabRunOptions options;
+  options.eventLimit = eventLimit;
   options.photons = photons;
   options.seed = seed;
   options.scheme = AbsorptionScheme::WeightWithRoulette;
@@ -93,6 +96,47 @@ TEST(SlabLaneWalker, AgreesWithMcmlsOwnSampleOutput) {
   const double perLayer[3] = {0.2612, 0.1488, 0.2316};
   for (std::size_t l = 0; l < 3; ++l) expectNear(r.layerAbsorptance[l], perLayer[l], 5e-5, "A_l");
   EXPECT_NEAR(r.specularReflectance, 0.0243729, 1e-7);
+}
+
+TEST(SlabLaneWalker, StopsAtTheEventLimitAsTheScalarWalk) {
+  // A limit of 60 events stops a good part of the MCML sample's packets (about 67 events on
+  // average) and of the mismatched stack's: both walks must book the same weight as
+  // event-limited and keep the same law for the rest (scores of one family, as above).
+  test::ScoreFamily family;
+  for (const SlabProblem& problem : {test::mcmlThreeLayerSample(), test::mismatchedSlab()}) {
+    const SlabResult lanes = run(problem, true, 41, 100000, 60);
+    const SlabResult scalar = run(problem, false, 42, 100000, 60);
+    EXPECT_GT(lanes.eventLimited.mean, 0.01);
+    auto compare = [&](const char* what, const Estimate& a, const Estimate& b) {
+      family.add(what, test::zScore(a.mean - b.mean, std::hypot(a.standardError, b.standardError)));
+    };
+    compare("event-limited", lanes.eventLimited, scalar.eventLimited);
+    compare("Rd", lanes.diffuseReflectance, scalar.diffuseReflectance);
+    compare("Tt", lanes.transmittance, scalar.transmittance);
+    compare("A", lanes.absorptance, scalar.absorptance);
+    // What was stopped is neither reflected, transmitted nor absorbed: the balance holds with it.
+    const double total = lanes.specularReflectance + lanes.diffuseReflectance.mean +
+                         lanes.transmittance.mean + lanes.absorptance.mean +
+                         lanes.eventLimited.mean;
+    EXPECT_NEAR(
+        total, 1.0,
+        4 * std::hypot(lanes.absorptance.standardError, lanes.diffuseReflectance.standardError));
+  }
+  family.expectWithinFamilyWiseBound();
+}
+
+TEST(SlabLaneWalker, EndsInAScatteringLayerThatNeverAbsorbs) {
+  // 10^6 optical depths that only scatter: a packet's stay has no finite mean (a random walk's
+  // return time), so without the bound some of 2000 packets would take ~10^12 steps. With it,
+  // the run ends; nothing is absorbed or transmitted, and each packet's weight (1: no roulette,
+  // matched indices) is reflected or event-limited.
+  const SlabProblem deep = test::singleLayer(1.0, {1.0, 0, 1e6, 0.0, 1.0}, 1.0);
+  for (const bool lanes : {true, false}) {
+    const SlabResult r = run(deep, lanes, 3, 2000);
+    EXPECT_EQ(r.absorptance.mean, 0.0);
+    EXPECT_EQ(r.transmittance.mean, 0.0);
+    EXPECT_NEAR(r.diffuseReflectance.mean + r.eventLimited.mean, 1.0, 1e-6) << lanes;
+  }
 }
 
 TEST(SlabLaneWalker, BalancesEnergyInExpectation) {
