@@ -65,14 +65,25 @@ HYLIOS_LANES_INLINE Floats gather(const float* table, Ints index) {
   for (int l = 0; l < kLanes; ++l) r[l] = table[index[l]];
   return r;
 }
-/// The same for a table of at most eight entries, padded to eight: one permute, no gather.
+/// The same for a table of at most eight entries, padded to eight: one permute, no gather (GCC;
+/// Clang, which builds the fuzzers, has no shuffle with a variable mask and reads lane by lane).
 HYLIOS_LANES_INLINE Floats permute(const float* table8, Ints index) {
+#if defined(__clang__)
+  return gather(table8, index);
+#else
   return __builtin_shuffle(load(table8), index);
+#endif
 }
 HYLIOS_LANES_INLINE Ints permuteInt(const std::int32_t* table8, Ints index) {
+#if defined(__clang__)
+  Ints r;
+  for (int l = 0; l < kLanes; ++l) r[l] = table8[index[l]];
+  return r;
+#else
   Ints t;
   __builtin_memcpy(&t, table8, sizeof t);
   return __builtin_shuffle(t, index);
+#endif
 }
 HYLIOS_LANES_INLINE Ints gatherInt(const std::int32_t* table, Ints index) {
   Ints r;
@@ -84,7 +95,11 @@ HYLIOS_LANES_INLINE Ints gatherInt(const std::int32_t* table, Ints index) {
 HYLIOS_LANES_INLINE bool any(Ints mask) {
   using Quads = std::uint64_t __attribute__((vector_size(32)));
   const Quads q = reinterpret_cast<Quads>(mask);
+#if defined(__clang__)
+  const Quads folded = q | __builtin_shufflevector(q, q, 2, 3, 0, 1);
+#else
   const Quads folded = q | __builtin_shuffle(q, Quads{2, 3, 0, 1});
+#endif
   return (folded[0] | folded[1]) != 0;
 }
 
