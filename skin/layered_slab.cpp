@@ -184,12 +184,10 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
   double z = 0.0;
   std::size_t k = 0;
   bool scattered = false;
+  // Events counted as the lane walk counts its steps: each boundary meeting and each interaction,
+  // checked before it happens.
   std::uint32_t events = 0;
   for (;;) {
-    if (++events > eventLimit_) {
-      scores.eventLimited = weight;
-      return;
-    }
     // Optical depth to the next interaction, Exp(1) (equivalent to the paper's Eq. 1 minimum over
     // processes). 1 - uniform() is in (0, 1], so the log is finite.
     double opticalDepth = -std::log(1.0 - rng.uniform());
@@ -206,7 +204,7 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
       }
       if (distanceToBoundary == kInfinity)  // unreachable: validation and Snell forbid it
         throw std::logic_error("slab walk: photon travels forever in a lossless layer");
-      if (++events > eventLimit_) {
+      if (++events > eventLimit_) {  // the boundary meeting
         scores.eventLimited = weight;
         return;
       }
@@ -231,6 +229,10 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
         }
         --k;
       }
+    }
+    if (++events > eventLimit_) {  // the interaction
+      scores.eventLimited = weight;
+      return;
     }
     const LayerData& layer = layers_[k];
     if (analog) {
