@@ -22,11 +22,6 @@ namespace hylios::skin {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// Implicit capture: roulette below this weight, survive with 1/kRouletteFactor. MCML rolls below
-// 1e-4; below 0.05 the walk ends its low-weight tails sooner at almost no variance (the MCML
-// sample: 1.15x the efficiency; docs/interpretations.md, "Generic slab").
-constexpr double kRouletteThreshold = 0.05;
-constexpr double kRouletteFactor = 10.0;
 // Photons per parallel task, and tasks per in-order reduction batch (bounds the memory held).
 constexpr std::uint64_t kPhotonsPerChunk = 4096;
 constexpr std::uint64_t kChunksPerBatch = 256;
@@ -244,10 +239,10 @@ void SlabWalker::trace(Rng& rng, PhotonScores& scores) const {
       const double deposited = weight * layer.absorptionProbability;
       scores.layerAbsorptance[k] += deposited;
       weight -= deposited;
-      if (weight < kRouletteThreshold) {
-        if (weight == 0.0 || rng.uniform() >= 1.0 / kRouletteFactor)
-          return;  // weight lost to roulette
-        weight *= kRouletteFactor;
+      if (weight < kSlabRouletteThreshold) {
+        if (weight == 0.0 || rng.uniform() >= kSlabRouletteSurvival)
+          return;                               // weight lost to roulette
+        weight *= 1.0 / kSlabRouletteSurvival;  // 1/0.1 rounds to 10 exactly
       }
     }
     u = scatterHenyeyGreenstein(u, layer.g, rng);

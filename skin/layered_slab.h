@@ -47,6 +47,12 @@ void validateSlabProblem(const SlabProblem& problem);
 /// below weight 0.05 (MCML: 1e-4) it survives a Russian roulette with chance 1/10 and weight x10
 /// (unbiased).
 enum class AbsorptionScheme { Analog, WeightWithRoulette };
+/// WeightWithRoulette's roulette, shared by the scalar and the lane walk: below this weight a
+/// packet survives with kSlabRouletteSurvival and carries 1/kSlabRouletteSurvival. MCML rolls
+/// below 1e-4; below 0.05 the walk ends its low-weight tails sooner at almost no variance (the
+/// MCML sample: 1.15x the efficiency; docs/interpretations.md, "Generic slab").
+inline constexpr double kSlabRouletteThreshold = 0.05;
+inline constexpr double kSlabRouletteSurvival = 0.1;
 /// Named "analog" / "weighted" on the command line (`hylios slab --scheme`).
 inline constexpr EnumNames<AbsorptionScheme, 2> kAbsorptionSchemeNames{
     {{AbsorptionScheme::WeightWithRoulette, "weighted"}, {AbsorptionScheme::Analog, "analog"}}};

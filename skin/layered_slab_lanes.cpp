@@ -27,11 +27,16 @@ using namespace lanes;
 // the AVX2 clone with the other convention, and the lanes would read garbage.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
-// The scalar walk's roulette (skin/layered_slab.cpp): below 0.05, survive with chance 1/10. On the
-// uniform grid k·2⁻²⁴ the test u < P has probability exactly P for P = 1677722·2⁻²⁴ (0.1 rounded
-// up), and the survivor carries 1/P.
-constexpr float kRouletteThreshold = 0.05f;
-constexpr float kSurvivalProbability = 1677722.0f * 0x1.0p-24f;
+// The scalar walk's roulette (kSlabRouletteThreshold, kSlabRouletteSurvival). On the uniform grid
+// k·2⁻²⁴ the test u < P has probability exactly P for P = the survival rounded up to the grid
+// (1677722·2⁻²⁴ for 0.1), and the survivor carries 1/P.
+constexpr float kRouletteThreshold = static_cast<float>(kSlabRouletteThreshold);
+constexpr double kSurvivalOnGrid = kSlabRouletteSurvival * 0x1.0p24;
+constexpr float kSurvivalProbability =
+    static_cast<float>(static_cast<std::uint32_t>(kSurvivalOnGrid) +
+                       (static_cast<std::uint32_t>(kSurvivalOnGrid) < kSurvivalOnGrid ? 1u : 0u)) *
+    0x1.0p-24f;
+static_assert(kSurvivalProbability == 1677722.0f * 0x1.0p-24f, "0.1 rounded up to the 2^-24 grid");
 constexpr float kInverseSurvivalProbability = 1.0f / kSurvivalProbability;
 
 // The constants of each lane's layer, refreshed only when a packet changes layer.
@@ -190,13 +195,12 @@ HYLIOS_LANES_INLINE StepEnds step(const SlabLaneWalker::Tables& t, std::int32_t 
 HYLIOS_LANES_INLINE void launch(const SlabLaneWalker& lanes, std::uint64_t seed, std::uint64_t last,
                                 const Ints& mask, std::uint64_t& next, Lanes& p) {
   const SlabWalker& walker = lanes.walker();
-  Rng beamRng(0);  // a beam's direction draws nothing
-  const Vec3 beam = walker.launchDirection(beamRng);
+  const SlabLaneWalker::Launch& start = lanes.launchState();
   p.z = select(mask, Floats{}, p.z);
-  p.ux = select(mask, splat(static_cast<float>(beam.x)), p.ux);
+  p.ux = select(mask, splat(start.ux), p.ux);
   p.uy = select(mask, Floats{}, p.uy);
-  p.uz = select(mask, splat(static_cast<float>(beam.z)), p.uz);
-  p.weight = select(mask, splat(static_cast<float>(walker.launchWeight())), p.weight);
+  p.uz = select(mask, splat(start.uz), p.uz);
+  p.weight = select(mask, splat(start.weight), p.weight);
   p.opticalDepth = select(mask, Floats{}, p.opticalDepth);
   p.absorbedHere = select(mask, Floats{}, p.absorbedHere);
   p.layer = selectInt(mask, Ints{}, p.layer);
@@ -278,6 +282,9 @@ SlabLaneWalker::SlabLaneWalker(const SlabWalker& walker)
         "SlabLaneWalker: the stack needs double precision (a coefficient or depth above 1e30, or "
         "a layer thinner than 2^-10 of its depth) or the event limit is 2^31 or more");
   const auto f = [](double x) { return static_cast<float>(x); };
+  Rng beamRng(0);  // a beam's direction draws nothing (diffuse light: drawn per packet)
+  const Vec3 beam = walker.launchDirection(beamRng);
+  launch_ = {f(beam.x), f(beam.z), f(walker.launchWeight())};
   for (const SlabWalker::LayerData& layer : walker.layers()) {
     tables_.zTop.push_back(f(layer.zTopCm));
     tables_.zBottom.push_back(f(layer.zBottomCm));

@@ -65,10 +65,17 @@ class SlabLaneWalker {
 
   const Tables& tables() const { return tables_; }
 
+  /// A packet's start inside layer 1 in float: the beam's direction (x, 0, z) and the weight.
+  struct Launch {
+    float ux, uz, weight;
+  };
+  const Launch& launchState() const { return launch_; }
+
  private:
   const SlabWalker& walker_;
   std::size_t layerCount_;
   Tables tables_;
+  Launch launch_{};
 };
 
 }  // namespace hylios::skin
