@@ -11,9 +11,6 @@
 #include "skin/core/constants.h"
 #include "skin/core/float_lanes.h"
 
-// Vectors passed between this file's functions: all compiled for one target, one convention.
-#pragma GCC diagnostic ignored "-Wpsabi"
-
 namespace hylios::skin::lanes {
 namespace {
 

@@ -13,9 +13,6 @@
 #include "skin/sampling/henyey_greenstein_lanes.h"
 #include "tests/support/chi2.h"
 
-// Vectors passed between this file's functions: all compiled for one target, one convention.
-#pragma GCC diagnostic ignored "-Wpsabi"
-
 namespace hylios::skin::lanes {
 namespace {
 

@@ -10,9 +10,6 @@
 #include "skin/core/lane_random.h"
 #include "tests/support/chi2.h"
 
-// Vectors passed between this file's functions: all compiled for one target, one convention.
-#pragma GCC diagnostic ignored "-Wpsabi"
-
 namespace hylios::skin::lanes {
 namespace {
 
