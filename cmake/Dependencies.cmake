@@ -10,7 +10,6 @@ find_package(glm REQUIRED)
 find_package(tinyobjloader REQUIRED)
 # OpenImageIO 2.4's CMake package drags in opencv include paths; its .pc file does not (docs/architecture.md).
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
-pkg_check_modules(OPENEXR REQUIRED IMPORTED_TARGET OpenEXR)
 if(HYLIOS_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

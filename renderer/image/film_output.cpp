@@ -1,8 +1,5 @@
 #include "renderer/image/film_output.h"
 
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,6 +8,7 @@
 #include <stdexcept>
 
 #include "renderer/image/colour_tables.h"
+#include "renderer/image/image_file.h"
 #include "renderer/image/preview_image.h"
 #include "skin/core/atomic_file.h"
 
@@ -161,30 +159,23 @@ FilmImages buildImages(const Film& film) {
 void writeExr(const FilmImages& images, const Film& film,
               const std::vector<std::pair<std::string, std::string>>& extraAttributes,
               const fs::path& path) {
+  std::vector<ImageAttribute> attributes{
+      {"spectralLayoutVersion", std::string("1.0")},
+      {"emissiveUnits", std::string("W.m^-2.sr^-1")},
+      {"hylios:spp", film.samplesPerPixelDone()},
+      {"hylios:sppTarget", film.desc().samplesPerPixel},
+      {"hylios:exposure", static_cast<float>(film.desc().exposure)},
+      {"hylios:rgb", images.rgbDescription},
+      {"hylios:bands", bandsAttribute(film.desc().bands)}};
+  for (const auto& [name, value] : extraAttributes) attributes.push_back({name, value});
+  ImageToWrite pixels;
+  pixels.width = images.width;
+  pixels.height = images.height;
+  pixels.channelNames = &images.channelNames;
+  pixels.pixels = images.pixels.data();
+  // The temporary name has no .exr extension: the format is named explicitly.
   writeAtomically(path, [&](const fs::path& tmp) {
-    // The temporary name has no .exr extension: name the format explicitly.
-    auto out = OIIO::ImageOutput::create("openexr");
-    if (!out) throw std::runtime_error("OpenImageIO has no OpenEXR writer: " + OIIO::geterror());
-    OIIO::ImageSpec spec(images.width, images.height, static_cast<int>(images.channelNames.size()),
-                         OIIO::TypeDesc::FLOAT);
-    spec.channelnames = images.channelNames;
-    spec.attribute("compression", "zip");
-    spec.attribute("spectralLayoutVersion", "1.0");
-    spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
-    spec.attribute("hylios:spp", film.samplesPerPixelDone());
-    spec.attribute("hylios:sppTarget", film.desc().samplesPerPixel);
-    spec.attribute("hylios:exposure", static_cast<float>(film.desc().exposure));
-    spec.attribute("hylios:rgb", images.rgbDescription);
-    spec.attribute("hylios:bands", bandsAttribute(film.desc().bands));
-    for (const auto& [name, value] : extraAttributes) spec.attribute(name, value);
-    if (!out->open(tmp.string(), spec)) {
-      throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
-    }
-    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, images.pixels.data());
-    const bool closed = out->close();
-    if (!written || !closed) {
-      throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
-    }
+    writeImageFile(tmp, ImageFileFormat::ExrFloat, pixels, attributes, path);
   });
 }
 
@@ -199,21 +190,43 @@ std::string fileSafe(const std::string& name) {
   return safe;
 }
 
-OIIO::ImageBuf colourPreview(const Film& film, std::size_t band) {
+RgbCanvas colourPreview(const Film& film, std::size_t band) {
   const BandDesc& desc = film.desc().bands[band];
   const auto channels = channelsOfBand(film, band);
   const double normalisation = colourBandNormalisation(desc);
-  OIIO::ImageBuf image = makeCanvas(film.width(), film.height());
+  RgbCanvas image = makeCanvas(film.width(), film.height());
   for (int y = 0; y < film.height(); ++y) {
     for (int x = 0; x < film.width(); ++x) {
       const auto rgb = pixelLinearSrgb(film, x, y, channels, desc.stepNm, normalisation);
-      const float display[3] = {static_cast<float>(srgbEncode(rgb[0] * film.desc().exposure)),
-                                static_cast<float>(srgbEncode(rgb[1] * film.desc().exposure)),
-                                static_cast<float>(srgbEncode(rgb[2] * film.desc().exposure))};
-      image.setpixel(x, y, display, 3);
+      image.set(
+          x, y,
+          {srgbEncode(rgb[0] * film.desc().exposure), srgbEncode(rgb[1] * film.desc().exposure),
+           srgbEncode(rgb[2] * film.desc().exposure)});
     }
   }
   return image;
+}
+
+/// A file's first three channels as RGB (fewer than three: the first channel as grey).
+RgbCanvas asRgb(const StoredImage& stored) {
+  RgbCanvas image = makeCanvas(stored.width, stored.height);
+  const std::size_t channels = stored.channelNames.size();
+  for (std::size_t p = 0; p * 3 < image.rgb.size(); ++p)
+    for (std::size_t c = 0; c < 3; ++c) {
+      image.rgb[p * 3 + c] = stored.pixels[p * channels + (channels < 3 ? 0 : c)];
+    }
+  return image;
+}
+
+/// Copies `image` into `sheet` with its top-left corner at (x, y) (pixels outside are dropped).
+void paste(const RgbCanvas& image, int x, int y, RgbCanvas& sheet) {
+  for (int row = 0; row < image.height; ++row)
+    for (int column = 0; column < image.width; ++column) {
+      const int tx = x + column, ty = y + row;
+      if (tx < 0 || ty < 0 || tx >= sheet.width || ty >= sheet.height) continue;
+      const float* from = image.pixel(column, row);
+      std::copy(from, from + 3, sheet.pixel(tx, ty));
+    }
 }
 
 std::string bandCaption(const BandDesc& band) {
@@ -378,23 +391,17 @@ void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<st
   }
   if (columns <= 0)
     throw std::invalid_argument("contact sheet '" + out.string() + "': columns must be positive");
-  std::vector<OIIO::ImageBuf> images;
+  std::vector<RgbCanvas> images;
   int cellWidth = 0, cellHeight = 0;
   for (const auto& path : panels) {
-    OIIO::ImageBuf image(path.string());
-    if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
+    StoredImage stored;
+    std::string error;
+    if (!tryReadImageFile(path, stored, error))
       throw std::runtime_error("contact sheet: cannot read panel '" + path.string() +
-                               "': " + image.geterror());
-    }
-    if (image.nchannels() < 3) {
-      const int grey[3] = {0, 0, 0};
-      image = OIIO::ImageBufAlgo::channels(image, 3, grey);
-    } else if (image.nchannels() > 3) {
-      image = OIIO::ImageBufAlgo::channels(image, 3, {});
-    }
-    cellWidth = std::max(cellWidth, image.spec().width);
-    cellHeight = std::max(cellHeight, image.spec().height);
-    images.push_back(std::move(image));
+                               "': " + error);
+    images.push_back(asRgb(stored));
+    cellWidth = std::max(cellWidth, stored.width);
+    cellHeight = std::max(cellHeight, stored.height);
   }
   const int fontSize = std::clamp(cellWidth / 16, 12, 28);
   const int labelHeight = fontSize * 2, padding = std::max(4, fontSize / 2);
@@ -404,7 +411,7 @@ void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<st
   const int titleFont = std::max(12, fontSize * 3 / 4), titleLine = titleFont * 3 / 2;
   const int titleHeight = static_cast<int>(titleLines.size()) * titleLine;
   const int sheetWidth = padding + columnCount * pitchX;
-  OIIO::ImageBuf sheet = makeCanvas(sheetWidth, padding + titleHeight + rowCount * pitchY);
+  RgbCanvas sheet = makeCanvas(sheetWidth, padding + titleHeight + rowCount * pitchY);
   bool labelled = true;
   for (std::size_t t = 0; t < titleLines.size(); ++t)
     labelled =
@@ -415,12 +422,8 @@ void writeContactSheet(const std::vector<fs::path>& panels, const std::vector<st
   for (std::size_t i = 0; i < images.size(); ++i) {
     const int column = static_cast<int>(i) % columnCount, row = static_cast<int>(i) / columnCount;
     const int left = padding + column * pitchX, top = padding + titleHeight + row * pitchY;
-    const int x = left + (cellWidth - images[i].spec().width) / 2;
-    const int y = top + (cellHeight - images[i].spec().height) / 2;
-    if (!OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, images[i])) {
-      throw std::runtime_error("contact sheet: cannot paste '" + panels[i].string() +
-                               "': " + sheet.geterror());
-    }
+    paste(images[i], left + (cellWidth - images[i].width) / 2,
+          top + (cellHeight - images[i].height) / 2, sheet);
     labelled =
         drawText(sheet, left + cellWidth / 2, top + cellHeight + fontSize + fontSize / 3, labels[i],
                  fittingFontSize(labels[i], cellWidth, fontSize), TextAnchor::Centre) &&

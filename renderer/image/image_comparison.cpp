@@ -1,7 +1,5 @@
 #include "renderer/image/image_comparison.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,6 +8,7 @@
 #include <stdexcept>
 
 #include "renderer/image/film_output.h"
+#include "renderer/image/image_file.h"
 
 namespace hylios {
 namespace {
@@ -118,27 +117,14 @@ std::string csvField(const std::string& text) {
 }  // namespace
 
 ExrImage readExrImage(const std::filesystem::path& path) {
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input)
-    throw std::runtime_error("cannot read image '" + path.string() + "': " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = input->spec();
+  StoredImage stored = readImageFile(path);
   ExrImage image;
-  image.width = spec.width;
-  image.height = spec.height;
-  image.channelNames = spec.channelnames;
-  if (image.width <= 0 || image.height <= 0 || image.channelNames.empty()) {
-    throw std::runtime_error("image '" + path.string() + "' has no pixels or no channels");
-  }
-  image.pixels.resize(static_cast<std::size_t>(image.width) * image.height *
-                      image.channelNames.size());
-  if (!input->read_image(0, 0, 0, static_cast<int>(image.channelNames.size()),
-                         OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-    throw std::runtime_error("cannot read the pixels of '" + path.string() +
-                             "': " + input->geterror());
-  }
-  image.bands = spec.get_string_attribute("hylios:bands");
-  image.rgbDescription = spec.get_string_attribute("hylios:rgb");
-  input->close();
+  image.width = stored.width;
+  image.height = stored.height;
+  image.channelNames = std::move(stored.channelNames);
+  image.pixels = std::move(stored.pixels);
+  image.bands = stored.attribute("hylios:bands");
+  image.rgbDescription = stored.attribute("hylios:rgb");
   const auto alpha = std::find(image.channelNames.begin(), image.channelNames.end(), "A");
   if (alpha != image.channelNames.end()) {  // the coverage mask: not a compared channel
     const std::size_t a = static_cast<std::size_t>(alpha - image.channelNames.begin());

@@ -1,8 +1,5 @@
 #include "renderer/image/preview_image.h"
 
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,6 +9,7 @@
 #include <utility>
 
 #include "renderer/image/colour_tables.h"
+#include "renderer/image/image_file.h"
 #include "skin/core/atomic_file.h"
 
 namespace hylios {
@@ -33,22 +31,16 @@ std::string fontName() {
   return name;
 }
 
-void setPixel(OIIO::ImageBuf& image, int x, int y, const std::array<double, 3>& rgb) {
-  const float value[3] = {static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
-                          static_cast<float>(rgb[2])};
-  image.setpixel(x, y, value, 3);
-}
-
 }  // namespace
 
 bool textRenderingAvailable() {
   static const bool available = [] {
-    OIIO::ImageBuf probe = makeCanvas(64, 32);
-    const bool drawn = OIIO::ImageBufAlgo::render_text(probe, 2, 24, "0.5", 16, fontName());
+    RgbCanvas probe = makeCanvas(64, 32);
+    const bool drawn =
+        drawImageText(probe.rgb.data(), probe.width, probe.height, 2, 24, "0.5", 16, fontName(), 0);
     if (!drawn) return false;
     // Some builds return success without FreeType; require that pixels actually changed.
-    const auto stats = OIIO::ImageBufAlgo::computePixelStats(probe);
-    return !stats.max.empty() && stats.max[0] > 0.0f;
+    return std::any_of(probe.rgb.begin(), probe.rgb.end(), [](float v) { return v > 0.0f; });
   }();
   return available;
 }
@@ -86,35 +78,20 @@ int fittingFontSize(const std::string& text, int widthPx, int fontSizePx, int mi
   if (!textRenderingAvailable() || text.empty()) return fontSizePx;
   const std::string ascii = asciiText(text);
   int size = fontSizePx;
-  while (size > minimumPx &&
-         OIIO::ImageBufAlgo::text_size(ascii, size, fontName()).width() > widthPx)
-    --size;
+  while (size > minimumPx && imageTextWidth(ascii, size, fontName()) > widthPx) --size;
   return size;
 }
 
-bool drawText(OIIO::ImageBuf& canvas, int x, int baselineY, const std::string& utf8Text,
-              int fontSizePx, TextAnchor anchor) {
+bool drawText(RgbCanvas& canvas, int x, int baselineY, const std::string& utf8Text, int fontSizePx,
+              TextAnchor anchor) {
   if (utf8Text.empty()) return true;
   if (!textRenderingAvailable()) return false;
-  const std::string text = asciiText(utf8Text);
-  const auto alignX = anchor == TextAnchor::Left    ? OIIO::ImageBufAlgo::TextAlignX::Left
-                      : anchor == TextAnchor::Right ? OIIO::ImageBufAlgo::TextAlignX::Right
-                                                    : OIIO::ImageBufAlgo::TextAlignX::Center;
-  const float white[3] = {1.0f, 1.0f, 1.0f};
-  return OIIO::ImageBufAlgo::render_text(canvas, x, baselineY, text, fontSizePx, fontName(),
-                                         OIIO::cspan<float>(white, 3), alignX,
-                                         OIIO::ImageBufAlgo::TextAlignY::Baseline);
+  const int alignX = anchor == TextAnchor::Left ? 0 : anchor == TextAnchor::Right ? 2 : 1;
+  return drawImageText(canvas.rgb.data(), canvas.width, canvas.height, x, baselineY,
+                       asciiText(utf8Text), fontSizePx, fontName(), alignX);
 }
 
-OIIO::ImageBuf makeCanvas(int width, int height) {
-  if (width <= 0 || height <= 0) {
-    throw std::invalid_argument("preview canvas must have a positive size, got " +
-                                std::to_string(width) + "x" + std::to_string(height));
-  }
-  OIIO::ImageBuf canvas(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
-  OIIO::ImageBufAlgo::zero(canvas);
-  return canvas;
-}
+RgbCanvas makeCanvas(int width, int height) { return RgbCanvas(width, height); }
 
 int colourBarStripHeight(int canvasWidth) {
   const int fontSize = std::clamp(canvasWidth / 20, 12, 24);
@@ -143,7 +120,7 @@ PseudoColourPanel pseudoColourPanel(const std::vector<double>& values, int width
     for (int x = 0; x < width; ++x) {
       const double v = values[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                               static_cast<std::size_t>(x)];
-      setPixel(panel.image, offsetX + x, y, colourMap((v - minValue) / (maxValue - minValue)));
+      panel.image.set(offsetX + x, y, colourMap((v - minValue) / (maxValue - minValue)));
     }
   }
   // The bar: colour map from min (left) to max (right), with ticks at both ends and the middle.
@@ -151,12 +128,12 @@ PseudoColourPanel pseudoColourPanel(const std::vector<double>& values, int width
   const int barLeft = margin, barRight = canvasWidth - margin - 1, barTop = height + gap;
   for (int x = barLeft; x <= barRight; ++x) {
     const auto rgb = colourMap(static_cast<double>(x - barLeft) / (barRight - barLeft));
-    for (int y = barTop; y < barTop + barHeight; ++y) setPixel(panel.image, x, y, rgb);
+    for (int y = barTop; y < barTop + barHeight; ++y) panel.image.set(x, y, rgb);
   }
   const int ticks[3] = {barLeft, (barLeft + barRight) / 2, barRight};
   for (const int x : ticks) {
     for (int y = barTop + barHeight; y < barTop + barHeight + tickLength; ++y)
-      setPixel(panel.image, x, y, {1.0, 1.0, 1.0});
+      panel.image.set(x, y, {1.0, 1.0, 1.0});
   }
   const int baseline = barTop + barHeight + tickLength + fontSize;
   panel.labelled = drawText(panel.image, barLeft, baseline, formatLabelNumber(minValue), fontSize,
@@ -168,36 +145,21 @@ PseudoColourPanel pseudoColourPanel(const std::vector<double>& values, int width
   return panel;
 }
 
-void writePngAtomically(const OIIO::ImageBuf& image, const std::filesystem::path& path) {
+void writePngAtomically(const RgbCanvas& image, const std::filesystem::path& path) {
+  std::vector<unsigned char> bytes(image.rgb.size());
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    const float v = image.rgb[i];
+    if (std::isnan(v)) throw std::runtime_error("NaN in preview image '" + path.string() + "'");
+    bytes[i] = static_cast<unsigned char>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+  }
+  static const std::vector<std::string> kChannels{"R", "G", "B"};
+  ImageToWrite pixels;
+  pixels.width = image.width;
+  pixels.height = image.height;
+  pixels.channelNames = &kChannels;
+  pixels.bytes = bytes.data();
   writeAtomically(path, [&](const std::filesystem::path& tmp) {
-    // The temporary name has no .png extension: name the format explicitly.
-    auto out = OIIO::ImageOutput::create("png");
-    if (!out) throw std::runtime_error("OpenImageIO has no PNG writer: " + OIIO::geterror());
-    const int width = image.spec().width, height = image.spec().height;
-    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
-    std::vector<float> row(static_cast<std::size_t>(width) * image.nchannels());
-    for (int y = 0; y < height; ++y) {
-      image.get_pixels(OIIO::ROI(0, width, y, y + 1), OIIO::TypeDesc::FLOAT, row.data());
-      for (int x = 0; x < width; ++x) {
-        for (int c = 0; c < 3; ++c) {
-          const float v = row[static_cast<std::size_t>(x) * image.nchannels() +
-                              static_cast<std::size_t>(std::min(c, image.nchannels() - 1))];
-          if (std::isnan(v))
-            throw std::runtime_error("NaN in preview image '" + path.string() + "'");
-          pixels[(static_cast<std::size_t>(y) * width + x) * 3 + c] =
-              static_cast<unsigned char>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-        }
-      }
-    }
-    if (!out->open(tmp.string(), spec)) {
-      throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
-    }
-    const bool written = out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
-    const bool closed = out->close();
-    if (!written || !closed) {
-      throw std::runtime_error("cannot write '" + path.string() + "': " + out->geterror());
-    }
+    writeImageFile(tmp, ImageFileFormat::Png8, pixels, {}, path);
   });
 }
 

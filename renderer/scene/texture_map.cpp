@@ -1,24 +1,20 @@
 #include "renderer/scene/texture_map.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
+
+#include "renderer/image/image_file.h"
 
 namespace hylios {
 
 TextureMap::TextureMap(const std::filesystem::path& path, const SourceLocation& where) {
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input)
-    throw SceneError(where, "cannot read texture '" + path.string() + "': " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = input->spec();
-  width_ = spec.width;
-  height_ = spec.height;
-  const int channels = spec.nchannels;
-  if (width_ <= 0 || height_ <= 0 || channels <= 0)
-    throw SceneError(where, "texture '" + path.string() + "' is empty");
-  std::vector<float> pixels(static_cast<std::size_t>(width_) * height_ * channels);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw SceneError(where, "cannot read texture '" + path.string() + "': " + input->geterror());
+  StoredImage image;
+  std::string error;
+  if (!tryReadImageFile(path, image, error))
+    throw SceneError(where, "cannot read texture '" + path.string() + "': " + error);
+  width_ = image.width;
+  height_ = image.height;
+  const int channels = static_cast<int>(image.channelNames.size());
+  const std::vector<float>& pixels = image.pixels;
   const int used = channels >= 3 ? 3 : 1;
   values_.resize(static_cast<std::size_t>(width_) * height_);
   for (std::size_t i = 0; i < values_.size(); ++i) {

@@ -269,16 +269,11 @@ TEST_F(FilmOutputTest, ContactSheetGridAndErrors) {
 
 TEST(PreviewText, LabelsAreDrawnWhenTextIsAvailable) {
   if (!hylios::textRenderingAvailable()) GTEST_SKIP() << "OpenImageIO cannot render text here";
-  OIIO::ImageBuf canvas = hylios::makeCanvas(80, 30);
+  hylios::RgbCanvas canvas = hylios::makeCanvas(80, 30);
   ASSERT_TRUE(hylios::drawText(canvas, 40, 22, "0.25", 16, hylios::TextAnchor::Centre));
   float maximum = 0;
-  for (int y = 0; y < 30; ++y) {
-    for (int x = 0; x < 80; ++x) {
-      float pixel[3];
-      canvas.getpixel(x, y, pixel, 3);
-      maximum = std::max(maximum, pixel[0]);
-    }
-  }
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 80; ++x) maximum = std::max(maximum, canvas.pixel(x, y)[0]);
   EXPECT_GT(maximum, 0.5f);
 }
 
