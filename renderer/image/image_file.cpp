@@ -1,7 +1,6 @@
 #include "renderer/image/image_file.h"
 
 #include <dlfcn.h>
-
 #include <stdexcept>
 #include <system_error>
 
@@ -108,8 +107,8 @@ int imageTextWidth(const std::string& text, int fontSizePx, const std::string& f
   return module().textWidth(text, fontSizePx, font);
 }
 
-bool drawImageText(float* rgb, int width, int height, int x, int baselineY,
-                   const std::string& text, int fontSizePx, const std::string& font, int anchor) {
+bool drawImageText(float* rgb, int width, int height, int x, int baselineY, const std::string& text,
+                   int fontSizePx, const std::string& font, int anchor) {
   return module().drawText(rgb, width, height, x, baselineY, text, fontSizePx, font, anchor);
 }
 

@@ -69,7 +69,7 @@ void writeImageFile(const std::filesystem::path& path, ImageFileFormat format,
 int imageTextWidth(const std::string& text, int fontSizePx, const std::string& font);
 /// Draws white ASCII `text` into an RGB float canvas (width × height × 3, row 0 at the top) with
 /// its baseline at y; anchor 0 left, 1 centre, 2 right of x. False when nothing could be drawn.
-bool drawImageText(float* rgb, int width, int height, int x, int baselineY,
-                   const std::string& text, int fontSizePx, const std::string& font, int anchor);
+bool drawImageText(float* rgb, int width, int height, int x, int baselineY, const std::string& text,
+                   int fontSizePx, const std::string& font, int anchor);
 
 }  // namespace hylios

@@ -23,11 +23,13 @@ struct RgbCanvas {
   }
   float* pixel(int x, int y) {
     return rgb.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                         static_cast<std::size_t>(x)) * 3;
+                         static_cast<std::size_t>(x)) *
+                            3;
   }
   const float* pixel(int x, int y) const {
     return rgb.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                         static_cast<std::size_t>(x)) * 3;
+                         static_cast<std::size_t>(x)) *
+                            3;
   }
   void set(int x, int y, const std::array<double, 3>& value) {
     float* p = pixel(x, y);

@@ -164,6 +164,8 @@ class Integrator {
   std::size_t skippedDegenerateTriangles(std::string* report = nullptr) const;
   /// The skin materials' effect plans (skin_walk_cache.h), for --explain.
   std::string effectPlanReport() const;
+  /// Table mode: per skin material, the walks per table bin at each melanin level ("" otherwise).
+  std::string tableWalksReport() const;
 
  private:
   struct Material {

@@ -63,7 +63,8 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
     const std::chrono::duration<double> setUp = Clock::now() - start;
     *log << "exit tables: " << cache.loaded() - loadedBefore << " loaded, "
          << cache.built() - builtBefore << " built (cache '" << cache.folder().string()
-         << "'); scene set up in " << setUp.count() << " s\n";
+         << "'); scene set up in " << setUp.count() << " s\n"
+         << integrator.tableWalksReport();
   }
   std::string degenerate;
   if (integrator.skippedDegenerateTriangles(&degenerate) > 0 && log) *log << degenerate;

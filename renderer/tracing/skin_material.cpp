@@ -5,6 +5,7 @@
 #include <exception>
 #include <stdexcept>
 
+#include "renderer/tracing/melanin_level_use.h"
 #include "renderer/tracing/surface_vectors.h"
 #include "skin/core/constants.h"
 #include "skin/core/vector3.h"
@@ -119,10 +120,13 @@ SkinMaterial::SkinMaterial(const MaterialDesc& desc, const skin::Specimen& speci
       specimen, lo, hi, channelWavelengths, spectra, desc.where,
       tableMode ? SkinTableCache::kTableMelaninLevels : SkinWalkCache::kMelaninLevels,
       spectralTables ? 0.0 : effectTolerance, bundles);
-  if (tableMode)
+  if (tableMode) {  // a level's tables get walks by the share of the skin it covers
+    const std::vector<double> shares =
+        levelRayShares(melaninLevelUse(*walks_, melaninMap_.get(), mapMin_, mapMax_, freckles_));
     tables_ = std::make_unique<SkinTableCache>(*walks_, ExitTableCache::shared(),
                                                SkinTableCache::renderSettings(tableRaysPerBin),
-                                               spectralTables);
+                                               spectralTables, shares);
+  }
   if (spectralTables)  // each band's tables sampled at once, the entry crossed by its walk
     for (int level = 0; level < walks_->levels(); ++level)
       for (std::size_t b = 0; b < bundles.size(); ++b) {

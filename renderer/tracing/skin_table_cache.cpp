@@ -2,6 +2,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 
 #include "skin/spectral_bundle.h"
@@ -23,9 +26,33 @@ skin::ExitTableSettings SkinTableCache::curveSettings() {
   return settings;
 }
 
+namespace {
+/// The settings of each level: `settings` with ⌈share·N⌉ walks per bin (at least 2).
+std::vector<skin::ExitTableSettings> settingsByLevel(const skin::ExitTableSettings& settings,
+                                                     int levels,
+                                                     const std::vector<double>& shares) {
+  if (!shares.empty() && shares.size() != static_cast<std::size_t>(levels))
+    throw std::invalid_argument("SkinTableCache: " + std::to_string(shares.size()) +
+                                " ray shares for " + std::to_string(levels) + " melanin levels");
+  std::vector<skin::ExitTableSettings> byLevel(static_cast<std::size_t>(levels), settings);
+  for (std::size_t l = 0; l < shares.size(); ++l) {
+    if (!(shares[l] > 0 && shares[l] <= 1))
+      throw std::invalid_argument("SkinTableCache: ray share " + std::to_string(shares[l]) +
+                                  " of level " + std::to_string(l) + " is outside (0, 1]");
+    const double rays = std::ceil(shares[l] * static_cast<double>(settings.raysPerBin));
+    byLevel[l].raysPerBin = std::max<std::uint64_t>(2, static_cast<std::uint64_t>(rays));
+  }
+  return byLevel;
+}
+}  // namespace
+
 SkinTableCache::SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,
-                               const skin::ExitTableSettings& settings, bool spectralBuild)
+                               const skin::ExitTableSettings& settings, bool spectralBuild,
+                               const std::vector<double>& levelRayShares)
     : channels_(walks.channels()) {
+  const std::vector<skin::ExitTableSettings> byLevel =
+      settingsByLevel(settings, walks.levels(), levelRayShares);
+  for (const skin::ExitTableSettings& s : byLevel) raysPerBinByLevel_.push_back(s.raysPerBin);
   // Channels that share a wavelength share a walk (SkinWalkCache prepares each wavelength once):
   // fetch one table per distinct walk, so no table is built twice.
   std::vector<const skin::SkinWalk*> distinct;
@@ -66,8 +93,11 @@ SkinTableCache::SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache
   tbb::parallel_for(std::size_t{0}, groups.size(), [&](std::size_t g) {
     std::vector<const skin::SkinWalk*> bundle;
     for (std::size_t d : groups[g]) bundle.push_back(distinct[d]);
-    const auto tables = spectralBuild ? cache.getBundle(bundle, settings)
-                                      : std::vector{cache.get(*bundle[0], settings)};
+    // A group holds walks of one level (a level's bundle, or one walk).
+    const skin::ExitTableSettings& levelSettings =
+        byLevel[static_cast<std::size_t>(levelOfDistinct[groups[g].front()])];
+    const auto tables = spectralBuild ? cache.getBundle(bundle, levelSettings)
+                                      : std::vector{cache.get(*bundle[0], levelSettings)};
     for (std::size_t j = 0; j < groups[g].size(); ++j) fetched[groups[g][j]] = tables[j];
   });
   for (std::size_t d : distinctOfSlot) tables_.push_back(fetched[d]);

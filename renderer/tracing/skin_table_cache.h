@@ -38,8 +38,15 @@ class SkinTableCache {
   /// N = 40 000 rays per bin, since a curve has no per-pixel noise to hide a table's error in.
   static skin::ExitTableSettings curveSettings();
 
+  /// `levelRayShares` (empty: 1 for every level; else one share in (0, 1] per level of `walks`):
+  /// level l's tables get ⌈share_l·N⌉ walks per bin (at least 2), N = settings.raysPerBin
+  /// (melanin_level_use.h). Throws std::invalid_argument for a wrong count or share.
   SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache,
-                 const skin::ExitTableSettings& settings, bool spectralBuild = false);
+                 const skin::ExitTableSettings& settings, bool spectralBuild = false,
+                 const std::vector<double>& levelRayShares = {});
+
+  /// N of each melanin level's tables (walks per bin before the cosine bins' thinning).
+  const std::vector<std::uint64_t>& raysPerBinByLevel() const { return raysPerBinByLevel_; }
 
   const skin::ExitTable& table(std::size_t channel, int level) const {
     return *tables_[static_cast<std::size_t>(level) * channels_ + channel];
@@ -47,6 +54,7 @@ class SkinTableCache {
 
  private:
   std::size_t channels_;
+  std::vector<std::uint64_t> raysPerBinByLevel_;
   std::vector<std::shared_ptr<const skin::ExitTable>> tables_;  ///< [level * channels + channel]
 };
 

@@ -30,17 +30,17 @@ class ImageFileTest : public ::testing::Test {
 TEST_F(ImageFileTest, OpenExrKeepsFloatsNamesAndAttributes) {
   // OpenEXR keeps its channels sorted by name (OpenImageIO reads them in that order): sorted here.
   const std::vector<std::string> names{"A", "S0.365,000000nm"};
-  const std::vector<float> pixels{1.0f, 0.125f, 0.0f, 3.5e-7f, 1.0f, 12345.5f};  // 3 × 1, 2 channels
+  const std::vector<float> pixels{1.0f,    0.125f, 0.0f,
+                                  3.5e-7f, 1.0f,   12345.5f};  // 3 × 1, 2 channels
   ImageToWrite image;
   image.width = 3;
   image.height = 1;
   image.channelNames = &names;
   image.pixels = pixels.data();
   const fs::path path = folder_ / "a.tmp";  // no extension: the format is named, not guessed
-  hylios::writeImageFile(path, ImageFileFormat::ExrFloat, image,
-                         {{"hylios:bands", std::string("uv=365")},
-                          {"hylios:spp", 7},
-                          {"hylios:exposure", 1.5f}});
+  hylios::writeImageFile(
+      path, ImageFileFormat::ExrFloat, image,
+      {{"hylios:bands", std::string("uv=365")}, {"hylios:spp", 7}, {"hylios:exposure", 1.5f}});
   const hylios::StoredImage read = hylios::readImageFile(path);
   EXPECT_EQ(read.width, 3);
   EXPECT_EQ(read.height, 1);

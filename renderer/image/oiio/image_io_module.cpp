@@ -1,11 +1,11 @@
 // libhylios_image_io: image files and text drawing through OpenImageIO, for
 // renderer/image/image_file.cpp (which loads this module on first use; see its header).
+#include "renderer/image/oiio/image_io_module.h"
+
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include <variant>
-
-#include "renderer/image/oiio/image_io_module.h"
 
 namespace hylios {
 namespace {
@@ -91,8 +91,8 @@ bool drawText(float* rgb, int width, int height, int x, int baselineY, const std
                                          OIIO::ImageBufAlgo::TextAlignY::Baseline);
 }
 
-const ImageIoModule kModule{kImageIoModuleAbi, sizeof(ImageIoModule), readImage, writeImage,
-                            textWidth, drawText};
+const ImageIoModule kModule{
+    kImageIoModuleAbi, sizeof(ImageIoModule), readImage, writeImage, textWidth, drawText};
 
 }  // namespace
 }  // namespace hylios

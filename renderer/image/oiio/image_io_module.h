@@ -21,8 +21,8 @@ struct ImageIoModule {
   bool (*write)(const std::string& path, ImageFileFormat format, const ImageToWrite& image,
                 const std::vector<ImageAttribute>& attributes, std::string& error);
   int (*textWidth)(const std::string& text, int fontSizePx, const std::string& font);
-  bool (*drawText)(float* rgb, int width, int height, int x, int baselineY,
-                   const std::string& text, int fontSizePx, const std::string& font, int anchor);
+  bool (*drawText)(float* rgb, int width, int height, int x, int baselineY, const std::string& text,
+                   int fontSizePx, const std::string& font, int anchor);
 };
 
 }  // namespace hylios
