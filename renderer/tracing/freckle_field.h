@@ -24,7 +24,6 @@ class FreckleField {
 
   bool empty() const { return !(densityPerCm2_ > 0); }
   double densityPerCm2() const { return densityPerCm2_; }
-  double radiusCm() const { return radiusCm_; }
   /// The melanin multiplier at a point in cm (1 away from freckles).
   double multiplier(const glm::dvec3& pointCm) const;
   /// Range of multiplier(): [min(1, gain), max(1, gain)].
