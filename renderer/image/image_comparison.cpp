@@ -117,14 +117,8 @@ std::string csvField(const std::string& text) {
 }  // namespace
 
 ExrImage readExrImage(const std::filesystem::path& path) {
-  StoredImage stored = readImageFile(path);
   ExrImage image;
-  image.width = stored.width;
-  image.height = stored.height;
-  image.channelNames = std::move(stored.channelNames);
-  image.pixels = std::move(stored.pixels);
-  image.bands = stored.attribute("hylios:bands");
-  image.rgbDescription = stored.attribute("hylios:rgb");
+  static_cast<StoredImage&>(image) = readImageFile(path);
   const auto alpha = std::find(image.channelNames.begin(), image.channelNames.end(), "A");
   if (alpha != image.channelNames.end()) {  // the coverage mask: not a compared channel
     const std::size_t a = static_cast<std::size_t>(alpha - image.channelNames.begin());
@@ -207,7 +201,7 @@ NoiseImage noiseImageOf(const ExrImage& image) {
       if (w >= lo - 1e-9 * lo && w <= hi + 1e-9 * hi) members.push_back(c);
     return members;
   };
-  std::istringstream bands(image.bands);
+  std::istringstream bands(image.attribute("hylios:bands"));
   std::string entry;
   while (std::getline(bands, entry, ';')) {
     const auto equals = entry.rfind('=');
@@ -230,7 +224,7 @@ NoiseImage noiseImageOf(const ExrImage& image) {
     groups.push_back(inRange(0, INFINITY));
   }
   std::array<int, 3> rgbChannels{-1, -1, -1};
-  if (image.rgbDescription.rfind("linear sRGB", 0) == 0)
+  if (image.attribute("hylios:rgb").rfind("linear sRGB", 0) == 0)
     for (int i = 0; i < 3; ++i) {
       const auto at =
           std::find(image.channelNames.begin(), image.channelNames.end(), std::string(1, "RGB"[i]));

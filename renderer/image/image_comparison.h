@@ -18,20 +18,17 @@
 #include <string>
 #include <vector>
 
+#include "renderer/image/image_file.h"
 #include "renderer/image/render_noise.h"
 
 namespace hylios {
 
-/// An image's float pixels, interleaved: pixels[(y·width + x)·channels + c].
-struct ExrImage {
-  int width = 0, height = 0;
-  std::vector<std::string> channelNames;
-  std::vector<float> pixels;
+/// An image file's float pixels and string attributes (StoredImage; hylios writes hylios:bands and
+/// hylios:rgb) without its channel "A", which is kept apart.
+struct ExrImage : StoredImage {
   /// The file's channel "A" (hylios: 1 where the pixel sees an object), kept apart from the
   /// compared channels; empty when the file has none.
   std::vector<bool> coverage;
-  std::string bands;           ///< attribute hylios:bands (empty when absent)
-  std::string rgbDescription;  ///< attribute hylios:rgb (empty when absent)
 
   float value(int x, int y, std::size_t channel) const {
     return pixels[(static_cast<std::size_t>(y) * width + x) * channelNames.size() + channel];
