@@ -145,12 +145,8 @@ std::string Integrator::tableWalksReport() const {
   for (std::size_t i = 0; i < materials_.size(); ++i) {
     const SkinTableCache* tables = materials_[i].skin ? materials_[i].skin->tables() : nullptr;
     if (!tables) continue;
-    const SkinWalkCache& walks = materials_[i].skin->walks();
-    text << "  skin '" << scene_.materials[i].name << "', walks per table bin by melanin level:";
-    for (int level = 0; level < walks.levels(); ++level)
-      text << (level == 0 ? " " : ", ") << "x" << walks.levelMultiplier(level) << " "
-           << tables->raysPerBinByLevel()[static_cast<std::size_t>(level)];
-    text << "\n";
+    text << "  skin '" << scene_.materials[i].name << "', walks per table bin by melanin level: "
+         << tables->describeRaysPerBin(materials_[i].skin->walks()) << "\n";
   }
   return text.str();
 }

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -101,6 +102,14 @@ SkinTableCache::SkinTableCache(const SkinWalkCache& walks, ExitTableCache& cache
     for (std::size_t j = 0; j < groups[g].size(); ++j) fetched[groups[g][j]] = tables[j];
   });
   for (std::size_t d : distinctOfSlot) tables_.push_back(fetched[d]);
+}
+
+std::string SkinTableCache::describeRaysPerBin(const SkinWalkCache& walks) const {
+  std::ostringstream text;
+  for (std::size_t level = 0; level < raysPerBinByLevel_.size(); ++level)
+    text << (level == 0 ? "" : ", ") << "x" << walks.levelMultiplier(static_cast<int>(level)) << " "
+         << raysPerBinByLevel_[level];
+  return text.str();
 }
 
 }  // namespace hylios

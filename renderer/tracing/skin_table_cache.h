@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "renderer/scene/scene.h"
@@ -47,6 +48,8 @@ class SkinTableCache {
 
   /// N of each melanin level's tables (walks per bin before the cosine bins' thinning).
   const std::vector<std::uint64_t>& raysPerBinByLevel() const { return raysPerBinByLevel_; }
+  /// "x<multiplier> <N>, …" for each level of `walks` (the cache's own), for the render's log.
+  std::string describeRaysPerBin(const SkinWalkCache& walks) const;
 
   const skin::ExitTable& table(std::size_t channel, int level) const {
     return *tables_[static_cast<std::size_t>(level) * channels_ + channel];

@@ -106,6 +106,7 @@ TEST(SkinTableCache, EachLevelGetsItsShareOfTheWalks) {
   settings.raysByUse = false;  // every bin keeps N: the table's own ray count shows the share
   const SkinTableCache tables(walks, cache, settings, false, {1.0, 0.25});
   EXPECT_EQ(tables.raysPerBinByLevel(), (std::vector<std::uint64_t>{40, 10}));
+  EXPECT_EQ(tables.describeRaysPerBin(walks), "x1 40, x4 10");
   EXPECT_EQ(tables.table(0, 0).settings().raysPerBin, 40u);
   EXPECT_EQ(tables.table(0, 1).settings().raysPerBin, 10u);
   EXPECT_THROW(SkinTableCache(walks, cache, settings, false, {1.0}), std::invalid_argument);
