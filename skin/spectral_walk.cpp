@@ -205,11 +205,11 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     logAngleNormalisation_.push_back(logAngleNormalisation(o.meanScatteringAngleRad));
     anglesDiffer_ = anglesDiffer_ || o.meanScatteringAngleRad != first.meanScatteringAngleRad;
     surfaceIndex_.push_back(o[slabs_.front().layer].refractiveIndex);
-    inverseSurfaceIndex_.push_back(1.0 / surfaceIndex_.back());
     bottomIndex_.push_back(o[slabs_.back().layer].refractiveIndex);
     surfaceIndicesDiffer_ = surfaceIndicesDiffer_ || surfaceIndex_.back() != surfaceIndex_.front();
   }
   smallestSurfaceIndex_ = *std::min_element(surfaceIndex_.begin(), surfaceIndex_.end());
+  surfaceGroups_ = SurfaceIndexGroups(surfaceIndex_);
   leastMelaninMuA_perCm_ = *std::min_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
   largestMelaninMuA_perCm_ = *std::max_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
   requireShared(options.roughSurface || !surfaceIndicesDiffer_,
@@ -335,8 +335,7 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
     const bool totalForAll =
         fromInside && 1.0 - cosI * cosI >= 1.0 / (smallestSurfaceIndex_ * smallestSurfaceIndex_);
     if (surfaceIndicesDiffer_ && !totalForAll)
-      spectral_weights::addLogReflectances(wavelengthCount_, cosI, surfaceIndex_.data(), fromInside,
-                                           s.logDensity.data());
+      surfaceGroups_.addLogReflectances(cosI, fromInside, s.logDensity.data());
     return false;
   }
   const Vec3 t = refractDirection(d, m, nFromH, nToH, hero.cosTransmitted);
@@ -350,10 +349,9 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
     return true;
   }
   if (!delta) {  // each λ's facet through the generalised half vector (skin/spectral_weights.h)
-    spectral_weights::addRefractionDensities(wavelengthCount_, d, t, macro, surfaceIndex_.data(),
-                                             inverseSurfaceIndex_.data(), fromInside,
-                                             aspectSquared_, forceTransmission, s.logDensity.data(),
-                                             s.proposalOffset.data());
+    surfaceGroups_.addRefractionDensities(d, t, macro, fromInside, aspectSquared_,
+                                          forceTransmission, s.logDensity.data(),
+                                          s.proposalOffset.data());
     return true;
   }
   for (std::size_t i = 0; i < wavelengthCount_; ++i) {
@@ -397,8 +395,7 @@ bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitE
         splitEntry && !fromInside && attempt == 0 && !delta && mirrored.z * towardFar < 0;
     if (split) {
       s.path.surfaceWeight.resize(wavelengthCount_);
-      spectral_weights::reflectances(wavelengthCount_, dot(s.direction, m), surfaceIndex_.data(),
-                                     false, s.path.surfaceWeight.data());
+      surfaceGroups_.reflectances(dot(s.direction, m), false, s.path.surfaceWeight.data());
       s.path.surfaceDirection = mirrored;
     }
     const bool transmitted = crossFacet(s, m, macroNormal, delta, inSkin, rng, split);

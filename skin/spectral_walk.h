@@ -45,6 +45,7 @@
 #include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/skin_optics.h"
 #include "skin/skin_walk.h"
+#include "skin/surface_index_groups.h"
 
 namespace hylios::skin {
 
@@ -209,7 +210,7 @@ class SpectralWalk {
   std::vector<double> logAngleNormalisation_;  ///< per λ: log of p(θ)·e^{θ/θo}/sinθ
   bool anglesDiffer_ = false;
   std::vector<double> surfaceIndex_;         ///< per λ: the top layer's index
-  std::vector<double> inverseSurfaceIndex_;  ///< per λ: 1 / surfaceIndex_
+  SurfaceIndexGroups surfaceGroups_;         ///< surfaceIndex_'s distinct values
   std::vector<double> bottomIndex_;          ///< per λ: the deepest layer's index
   bool surfaceIndicesDiffer_ = false;
   double smallestSurfaceIndex_ = 1;
