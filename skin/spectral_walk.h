@@ -209,9 +209,9 @@ class SpectralWalk {
   std::vector<double> meanAngleRad_;           ///< per λ: θo of Algorithm 2
   std::vector<double> logAngleNormalisation_;  ///< per λ: log of p(θ)·e^{θ/θo}/sinθ
   bool anglesDiffer_ = false;
-  std::vector<double> surfaceIndex_;         ///< per λ: the top layer's index
-  SurfaceIndexGroups surfaceGroups_;         ///< surfaceIndex_'s distinct values
-  std::vector<double> bottomIndex_;          ///< per λ: the deepest layer's index
+  std::vector<double> surfaceIndex_;  ///< per λ: the top layer's index
+  SurfaceIndexGroups surfaceGroups_;  ///< surfaceIndex_'s distinct values
+  std::vector<double> bottomIndex_;   ///< per λ: the deepest layer's index
   bool surfaceIndicesDiffer_ = false;
   double smallestSurfaceIndex_ = 1;
   std::optional<SurfaceNormalPolarSampler> facetPolar_;

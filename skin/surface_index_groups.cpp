@@ -48,19 +48,18 @@ void SurfaceIndexGroups::addLogReflectances(double cosI, bool fromInside,
 }
 
 void SurfaceIndexGroups::addRefractionDensities(const Vec3& d, const Vec3& t, const Vec3& macro,
-                                                bool fromInside, double aspectSquared,
-                                                bool forced, double* logDensity,
-                                                double* proposalOffset) const {
+                                                bool fromInside, double aspectSquared, bool forced,
+                                                double* logDensity, double* proposalOffset) const {
   if (!grouped()) {
     spectral_weights::addRefractionDensities(memberCount(), d, t, macro, memberIndex_.data(),
-                                             memberInverseIndex_.data(), fromInside,
-                                             aspectSquared, forced, logDensity, proposalOffset);
+                                             memberInverseIndex_.data(), fromInside, aspectSquared,
+                                             forced, logDensity, proposalOffset);
     return;
   }
   std::array<double, kMaxGroups> logPerGroup{}, offsetPerGroup{};
   spectral_weights::addRefractionDensities(groupCount(), d, t, macro, index_.data(),
-                                           inverseIndex_.data(), fromInside, aspectSquared,
-                                           forced, logPerGroup.data(), offsetPerGroup.data());
+                                           inverseIndex_.data(), fromInside, aspectSquared, forced,
+                                           logPerGroup.data(), offsetPerGroup.data());
   // A missing facet is −∞ in the group, and x + (−∞) = −∞ as the kernel assigns it.
   for (std::size_t i = 0; i < memberCount(); ++i) logDensity[i] += logPerGroup[groupOfMember_[i]];
   if (forced)  // the kernel subtracts log(1 − F): y + (0 − l) = y − l

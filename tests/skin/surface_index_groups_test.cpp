@@ -41,8 +41,8 @@ void expectKernelsBits(const std::vector<double>& index) {
     for (std::size_t i = 0; i < n; ++i) expectedLog[i] = expectedOffset[i] = rng.uniform() - 0.5;
     std::vector<double> log = expectedLog, offset = expectedOffset;
     spectral_weights::addRefractionDensities(n, d, t, macro, index.data(), inverse.data(),
-                                             fromInside, aspectSquared, forced,
-                                             expectedLog.data(), expectedOffset.data());
+                                             fromInside, aspectSquared, forced, expectedLog.data(),
+                                             expectedOffset.data());
     groups.addRefractionDensities(d, t, macro, fromInside, aspectSquared, forced, log.data(),
                                   offset.data());
     std::vector<double> expectedR(n), r(n, -1.0), expectedLogR(n, 0.25), logR(n, 0.25);
