@@ -510,15 +510,17 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   const int doneAtStart = done;
   // With a noise target the film's estimate is taken at sample counts that depend only on the
   // film (never on timing), so a render stops at the same spp on any machine: first at
-  // kMinNoiseSamples, then at done × (noise/target)² × 1.1, at least ×1.25 and at most ×4.
+  // kMinNoiseSamples, then at done × (noise/target)² × 1.1 (at most ×4), at least
+  // kNoiseCheckGranule more, rounded up to a multiple of kNoiseCheckGranule (header).
   int nextCheck = std::max(kMinNoiseSamples, done);
   auto targetReached = [&] {
     total.noise = noiseOf(film);
     const double ratio = worstNoise(total.noise) / *options.noiseTarget;
     if (ratio <= 1) return total.noiseTargetReached = true;
-    const double growth = std::clamp(ratio * ratio * 1.1, 1.25, 4.0);
-    nextCheck = static_cast<int>(std::min<double>(spp, std::ceil(done * growth)));
-    nextCheck = std::max(nextCheck, done + 1);
+    const double wanted = std::ceil(done * std::min(ratio * ratio * 1.1, 4.0));
+    const int next = std::max(static_cast<int>(wanted), done + kNoiseCheckGranule);
+    nextCheck =
+        std::min(spp, (next + kNoiseCheckGranule - 1) / kNoiseCheckGranule * kNoiseCheckGranule);
     return false;
   };
   while (done < spp) {

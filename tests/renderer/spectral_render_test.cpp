@@ -96,6 +96,7 @@ TEST(SpectralRender, NoiseTargetStopsWhenTheEstimateIsReached) {
   EXPECT_TRUE(stats.noiseTargetReached);
   EXPECT_LT(film.samplesPerPixelDone(), 4096);
   EXPECT_GE(film.samplesPerPixelDone(), kMinNoiseSamples);
+  EXPECT_EQ(film.samplesPerPixelDone() % kNoiseCheckGranule, 0);  // the checks' sample counts
   EXPECT_LE(worstNoise(stats.noise), 0.08);
   // Where it stops depends on the film only, not on timing: other pass sizes, one thread, same spp
   // and the same sums.
