@@ -72,11 +72,11 @@ ExitTableBundle::ExitTableBundle(const SpectralWalk& entryWalk,
 }
 
 void ExitTableBundle::sample(const Vec3& incident, Rng& rng, SpectralPath& path,
-                             bool splitEntryReflection,
-                             const std::array<double, 2>* stratified) const {
+                             bool splitEntryReflection, const std::array<double, 2>* stratified,
+                             const FacetNumbers* firstFacet) const {
   thread_local SpectralEntry entry;
   path.exitEntryWeight.clear();
-  if (!entryWalk_.enter(incident, rng, path, entry, splitEntryReflection)) return;
+  if (!entryWalk_.enter(incident, rng, path, entry, splitEntryReflection, firstFacet)) return;
   const std::size_t n = tables_.size();
   thread_local std::vector<double> ratio, density;
   entryRatios(entry, ratio);

@@ -55,9 +55,11 @@ class ExitTableBundle {
   /// fields stay 0. `stratified` (may be null): two uniform numbers in [0, 1) for the second hero
   /// and its offset cell, e.g. a pixel's stratified or low-discrepancy sample
   /// (renderer/tracing/pixel_sampler.h), instead of two from `rng`; any uniform pair keeps the
-  /// weights exact in expectation.
+  /// weights exact in expectation. `firstFacet` (may be null): the entry's first facet numbers
+  /// (SpectralWalk::enter).
   void sample(const Vec3& incident, Rng& rng, SpectralPath& path, bool splitEntryReflection,
-              const std::array<double, 2>* stratified = nullptr) const;
+              const std::array<double, 2>* stratified = nullptr,
+              const FacetNumbers* firstFacet = nullptr) const;
 
  private:
   /// A member with subsurface exits in a bin, with what sample() reads of it there.

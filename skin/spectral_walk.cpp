@@ -234,8 +234,9 @@ void SpectralWalk::startPath(State& s, const Vec3& direction, Rng& rng) const {
   s.direction = direction;
 }
 
-bool SpectralWalk::enterFromAir(State& s, Rng& rng, bool splitEntryReflection) const {
-  if (crossSurface(s, false, rng, splitEntryReflection)) return true;
+bool SpectralWalk::enterFromAir(State& s, Rng& rng, bool splitEntryReflection,
+                                const FacetNumbers* firstFacet) const {
+  if (crossSurface(s, false, rng, splitEntryReflection, firstFacet)) return true;
   s.path.end = PathEnd::SurfaceReflection;
   s.path.exitDirection = s.direction;
   s.misRatios(s.path.exitWeight);
@@ -243,17 +244,18 @@ bool SpectralWalk::enterFromAir(State& s, Rng& rng, bool splitEntryReflection) c
 }
 
 void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
-                         bool splitEntryReflection) const {
+                         bool splitEntryReflection, const FacetNumbers* firstFacet) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);
   startPath(s, incidentDirection, rng);
-  if (enterFromAir(s, rng, splitEntryReflection)) traceEntered(s, rng);
+  if (enterFromAir(s, rng, splitEntryReflection, firstFacet)) traceEntered(s, rng);
 }
 
 bool SpectralWalk::enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
-                         SpectralEntry& entry, bool splitEntryReflection) const {
+                         SpectralEntry& entry, bool splitEntryReflection,
+                         const FacetNumbers* firstFacet) const {
   State s(path, wavelengthCount_, options_.layerAbsorption);
   startPath(s, incidentDirection, rng);
-  if (!enterFromAir(s, rng, splitEntryReflection)) return false;
+  if (!enterFromAir(s, rng, splitEntryReflection, firstFacet)) return false;
   entry.direction = s.direction;
   entry.hero = s.hero;
   entry.logTarget = s.logDensity;
@@ -365,7 +367,8 @@ bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool d
   return true;
 }
 
-bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry) const {
+bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry,
+                                const FacetNumbers* firstFacet) const {
   const double towardFar = s.direction.z > 0 ? 1.0 : -1.0;
   bool onFarSide = false;
   for (int attempt = 0; attempt <= kMaxSurfaceBounces; ++attempt) {
@@ -376,8 +379,9 @@ bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitE
     if (!delta) {
       delta = true;
       for (int redraw = 0; redraw < kMaxFacetRedraws && delta; ++redraw) {
-        const PolarCosSin theta = facetPolar_->sample(rng);
-        const Azimuth phi = sampleAzimuth(rng);
+        const FacetNumbers* numbers = attempt == 0 && redraw == 0 ? firstFacet : nullptr;
+        const PolarCosSin theta = facetPolar_->sample(rng, numbers ? &numbers->polar : nullptr);
+        const Azimuth phi = numbers ? azimuthFromUniform(numbers->azimuth) : sampleAzimuth(rng);
         const Vec3 candidate =
             directionAbout(macroNormal, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
         if (dot(s.direction, candidate) < 0) {

@@ -89,6 +89,16 @@ struct SpectralPath {
   std::vector<double> work;  ///< per-λ arrays of SpectralWalk::finish (skin/spectral_weights.h)
 };
 
+/// Uniform numbers in [0, 1) for the first facet of the rough surface a path from air meets, e.g. a
+/// pixel's stratified or low-discrepancy sample (renderer/tracing/pixel_sampler.h): the polar
+/// angle's first rejection trial (SurfaceNormalPolarSampler::sample) and the azimuth
+/// (azimuthFromUniform). Any uniform numbers keep every weight exact in expectation; later facets
+/// and redraws come from the path's Rng.
+struct FacetNumbers {
+  std::array<double, 2> polar{};
+  double azimuth = 0;
+};
+
 /// A spectral path's surface entry alone (SpectralWalk::enter), for samplers that tabulate what
 /// follows (skin/exit_table_bundle.h): the densities of the crossing per λ, so that the rest of the
 /// path can join the same one-sample MIS over the bundle.
@@ -126,15 +136,16 @@ class SpectralWalk {
   void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path) const {
     trace(incidentDirection, rng, path, options_.splitEntryReflection);
   }
-  /// The same with the entry split (WalkOptions::splitEntryReflection) chosen per call.
-  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
-             bool splitEntryReflection) const;
+  /// The same with the entry split (WalkOptions::splitEntryReflection) chosen per call, and the
+  /// first facet's numbers from `firstFacet` (may be null: from `rng`).
+  void trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path, bool splitEntryReflection,
+             const FacetNumbers* firstFacet = nullptr) const;
   /// The surface crossing of trace() alone. Returns true when the path entered the skin; then
   /// `entry` holds its direction, hero and densities, and `path` only the surface weights of a
   /// split entry (SpectralPath::surfaceWeight). Otherwise `path` is the surface reflection, scored
-  /// exactly as trace() scores it.
+  /// exactly as trace() scores it. `firstFacet` as for trace().
   bool enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& path, SpectralEntry& entry,
-             bool splitEntryReflection) const;
+             bool splitEntryReflection, const FacetNumbers* firstFacet = nullptr) const;
   /// A path that has just crossed into the skin along `transmittedDirection` (unit, z > 0), the
   /// same for every wavelength (like SkinWalk::traceEntered; exit tables are built from these).
   void traceEntered(const Vec3& transmittedDirection, Rng& rng, SpectralPath& path) const;
@@ -173,12 +184,15 @@ class SpectralWalk {
   /// A new path along `direction`: one event (its surface crossing), no offset, the hero drawn.
   void startPath(State& s, const Vec3& direction, Rng& rng) const;
   /// The crossing from air; false when the surface reflected the path, which is then scored.
-  bool enterFromAir(State& s, Rng& rng, bool splitEntryReflection) const;
+  bool enterFromAir(State& s, Rng& rng, bool splitEntryReflection,
+                    const FacetNumbers* firstFacet) const;
   /// The hero: uniform over the bundle.
   std::size_t drawHero(Rng& rng) const;
   /// The rough (or smooth) surface crossing of Sec. 4.3 from air (fromInside false) or from the
   /// skin; returns whether the ray ended on the far side, updating s.direction and densities.
-  bool crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry = false) const;
+  /// `firstFacet` (may be null) supplies the first facet's numbers.
+  bool crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry = false,
+                    const FacetNumbers* firstFacet = nullptr) const;
   /// One Fresnel test on facet m (the macro normal when `delta`); true when transmitted.
   bool crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta, bool fromInside, Rng& rng,
                   bool forceTransmission = false) const;

@@ -309,15 +309,22 @@ void Integrator::tracePath(Ray ray, int firstDepth, const double* throughput,
       ChannelBuffer surface(split ? n : 0), before(beta, beta + (split ? n : 0));
       // There, in table mode, the exit's draw (its table and offset cell) takes the pixel's
       // stratified pair: the channels' weights vary most with which table the exit came from.
+      // And the rough surface's first facet takes three numbers of the pixel's: it decides the
+      // surface branch's direction, a glossy reflection that finds the lights or not.
       std::array<double, 2> exitSample{};
       const bool stratifyExit = split && material.skin->tables();
       if (stratifyExit) exitSample = samples.get2D();
+      skin::FacetNumbers facetNumbers;
+      if (split) {
+        facetNumbers.polar = samples.get2D();
+        facetNumbers.azimuth = samples.get1D();
+      }
       if (spectrum.spectral && material.skin->tables() && scene_.integrator.exitControlVariate)
         useControl = true;
       const SkinScatter s =
           scatterSkin(*material.skin, *hit, ray.direction, spectrum, samples.rng(), beta,
                       split ? surface.data() : nullptr, stratifyExit ? &exitSample : nullptr,
-                      useControl ? control.data() : nullptr);
+                      useControl ? control.data() : nullptr, split ? &facetNumbers : nullptr);
       controlAt = s.entryWeights ? std::optional<FacingNormals>(facing) : std::nullopt;
       if (s.surfaceBranch) {
         for (std::size_t i = 0; i < n; ++i) surface[i] *= before[i];
@@ -434,16 +441,16 @@ void Integrator::traceSurfaceBranch(const SkinMaterial& skin, const SurfaceHit& 
 SkinScatter Integrator::scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
                                     const glm::dvec3& direction, const PathSpectrum& spectrum,
                                     skin::Rng& rng, double* beta, double* surfaceWeights,
-                                    const std::array<double, 2>* exitSample,
-                                    double* controlBeta) const {
+                                    const std::array<double, 2>* exitSample, double* controlBeta,
+                                    const skin::FacetNumbers* firstFacet) const {
   if (!spectrum.spectral)
     return skin.scatter(hit, direction, spectrum[0], *geometry_, materialOfShape_, rng);
   thread_local std::vector<double> weights, entryWeights;
   weights.resize(spectrum.size());
   entryWeights.resize(spectrum.size());
-  SkinScatter s = skin.scatterSpectral(hit, direction, spectrum.bundle, *geometry_,
-                                       materialOfShape_, rng, weights.data(), surfaceWeights,
-                                       exitSample, controlBeta ? entryWeights.data() : nullptr);
+  SkinScatter s = skin.scatterSpectral(
+      hit, direction, spectrum.bundle, *geometry_, materialOfShape_, rng, weights.data(),
+      surfaceWeights, exitSample, controlBeta ? entryWeights.data() : nullptr, firstFacet);
   // One channel (or no second stage): w = A, nothing to control.
   if (s.entryWeights)
     s.entryWeights = !std::equal(weights.begin(), weights.end(), entryWeights.begin());
@@ -510,14 +517,14 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   const int doneAtStart = done;
   // With a noise target the film's estimate is taken at sample counts that depend only on the
   // film (never on timing), so a render stops at the same spp on any machine: first at
-  // kMinNoiseSamples, then at done × (noise/target)² × 1.1 (at most ×4), at least
-  // kNoiseCheckGranule more, rounded up to a multiple of kNoiseCheckGranule (header).
+  // kMinNoiseSamples, then at done × (noise/target)² (at most ×4), at least kNoiseCheckGranule
+  // more, rounded up to a multiple of kNoiseCheckGranule (header): the rounding is the margin.
   int nextCheck = std::max(kMinNoiseSamples, done);
   auto targetReached = [&] {
     total.noise = noiseOf(film);
     const double ratio = worstNoise(total.noise) / *options.noiseTarget;
     if (ratio <= 1) return total.noiseTargetReached = true;
-    const double wanted = std::ceil(done * std::min(ratio * ratio * 1.1, 4.0));
+    const double wanted = std::ceil(done * std::min(ratio * ratio, 4.0));
     const int next = std::max(static_cast<int>(wanted), done + kNoiseCheckGranule);
     nextCheck =
         std::min(spp, (next + kNoiseCheckGranule - 1) / kNoiseCheckGranule * kNoiseCheckGranule);

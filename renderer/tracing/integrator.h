@@ -212,11 +212,14 @@ class Integrator {
   /// (spectral). surfaceWeights (spectral only, may be null): the entry split's surface weights.
   /// controlBeta (spectral, may be null): where the exit has a second stage
   /// (SkinScatter::entryWeights), the control variate's throughput β_before · (A_λ − w_λ).
+  /// exitSample, firstFacet (may be null): the pixel's numbers for the exit's draw and the entry's
+  /// first facet (SkinMaterial::scatterSpectral).
   SkinScatter scatterSkin(const SkinMaterial& skin, const SurfaceHit& hit,
                           const glm::dvec3& direction, const PathSpectrum& spectrum, skin::Rng& rng,
                           double* beta, double* surfaceWeights = nullptr,
                           const std::array<double, 2>* exitSample = nullptr,
-                          double* controlBeta = nullptr) const;
+                          double* controlBeta = nullptr,
+                          const skin::FacetNumbers* firstFacet = nullptr) const;
   /// The rest of a path from `ray` (its vertex count so far `firstDepth`) with throughput
   /// `throughput`, adding into L; splitFirstSkinHit: the first skin hit splits its entry;
   /// firstPdf > 0: the density (sr⁻¹) with which `ray`'s direction was sampled, for MIS with

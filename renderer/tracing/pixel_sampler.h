@@ -1,10 +1,10 @@
 // The numbers a camera sample draws (issue 12, item 3). A camera path asks a SampleStream for its
 // decisions in a fixed order — the camera sample (band or channel 1-D, sub-pixel position 2-D,
 // lens 2-D), then at each vertex the integrator's own choices (a dielectric's 1-D coin, the light
-// sample: light 1-D, triangle 1-D, position 2-D; the cosine bounce 2-D; at the first skin hit in
-// table mode the exit's draw 2-D, skin/exit_table_bundle.h) — and hands the skin walks its
-// independent generator (stream.rng()): their hundreds of decisions gain nothing from
-// stratification.
+// sample: light 1-D, triangle 1-D, position 2-D; the cosine bounce 2-D; at the first skin hit of
+// a spectral path, in table mode the exit's draw 2-D (skin/exit_table_bundle.h), then the rough
+// surface's first facet 2-D + 1-D (skin::FacetNumbers)) — and hands the skin walks its independent
+// generator (stream.rng()): their hundreds of other decisions gain nothing from stratification.
 //
 // independent: every number from skin::Rng(seed, pixel, sample), drawn in the order above, with the
 //   band or channel stratified over blocks of `strata` consecutive samples of the pixel, each block
@@ -59,10 +59,10 @@ std::array<std::uint32_t, 2> scrambledSobol2D(std::uint32_t reversedIndex,
                                               std::uint32_t seedY);
 }  // namespace sobol
 
-/// Low-discrepancy dimensions per camera path (sobol): the camera sample (5), a table-mode skin
-/// exit's draw at the first skin hit (2), and the light sample and bounce of the first vertices (6
-/// each); the rest comes from the sample's Rng.
-constexpr std::uint32_t kLowDiscrepancyDimensions = 19;
+/// Low-discrepancy dimensions per camera path (sobol): the camera sample (5), at the first skin hit
+/// a table-mode exit's draw (2) and the entry's first facet (3), and the light sample and bounce of
+/// the first vertices (6 each); the rest comes from the sample's Rng.
+constexpr std::uint32_t kLowDiscrepancyDimensions = 22;
 
 /// The numbers of one camera path (see above). Cheap to copy; holds a pointer to the sample's Rng.
 class SampleStream {

@@ -211,7 +211,8 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
                                           const std::vector<std::size_t>& materialOfShape,
                                           skin::Rng& rng, double* weights, double* surfaceWeights,
                                           const std::array<double, 2>* exitSample,
-                                          double* entryWeights) const {
+                                          double* entryWeights,
+                                          const skin::FacetNumbers* firstFacet) const {
   if (tables_ && tableBundles_.empty())
     throw std::logic_error("SkinMaterial::scatterSpectral: the tables were built per wavelength");
   const FacingNormals normals = faceTheRay(direction, hit.geometricNormal, hit.shadingNormal);
@@ -224,9 +225,9 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
   path.exitEntryWeight.clear();
   if (tables_)
     tableBundles_[static_cast<std::size_t>(level) * walks_->bundles() + bundle].sample(
-        incident, rng, path, split, exitSample);
+        incident, rng, path, split, exitSample, firstFacet);
   else
-    walk.trace(incident, rng, path, split);
+    walk.trace(incident, rng, path, split, firstFacet);
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
   SkinScatter out = exitOf(hit, direction, normals, frame, path.end, path.exitDirection,
                            path.exitOffsetXCm, path.exitOffsetYCm, geometry, materialOfShape);

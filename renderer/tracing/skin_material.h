@@ -135,13 +135,15 @@ class SkinMaterial {
   /// `exitSample` (table mode; may be null): a stratified uniform pair for the exit's draw
   /// (skin/exit_table_bundle.h), used in place of two numbers from `rng`. `entryWeights` (may be
   /// null): gets the exit weights without the second stage's ratio where there is one
-  /// (SkinScatter::entryWeights).
+  /// (SkinScatter::entryWeights). `firstFacet` (may be null): stratified numbers for the rough
+  /// surface's first facet at entry (skin::FacetNumbers), in table and walk mode.
   SkinScatter scatterSpectral(const SurfaceHit& hit, const glm::dvec3& direction,
                               std::size_t bundle, const EmbreeScene& geometry,
                               const std::vector<std::size_t>& materialOfShape, skin::Rng& rng,
                               double* weights, double* surfaceWeights = nullptr,
                               const std::array<double, 2>* exitSample = nullptr,
-                              double* entryWeights = nullptr) const;
+                              double* entryWeights = nullptr,
+                              const skin::FacetNumbers* firstFacet = nullptr) const;
 
   /// The model lobe g (per sr) of a surface reflection into `outgoing` for a ray travelling along
   /// `incident` onto a surface with outward normal `normal` (all unit, world).

@@ -77,10 +77,19 @@ SurfaceNormalPolarSampler::SurfaceNormalPolarSampler(double aspectRatio)
   }
 }
 
-PolarCosSin SurfaceNormalPolarSampler::sample(Rng& rng) const {
+PolarCosSin SurfaceNormalPolarSampler::sample(Rng& rng,
+                                              const std::array<double, 2>* firstTrial) const {
   double c = 0, h2 = 0;
   for (;;) {
-    const double u1 = rng.uniform(), u2 = rng.uniform();
+    double u1 = 0, u2 = 0;
+    if (firstTrial) {
+      u1 = (*firstTrial)[0];
+      u2 = (*firstTrial)[1];
+      firstTrial = nullptr;
+    } else {
+      u1 = rng.uniform();
+      u2 = rng.uniform();
+    }
     double envelope = s_;
     if (s_ < 1.0) {
       // c from the density ∝ s + k·c: s·c + k·c²/2 = w, root 2w/(s + sqrt(s² + 2kw)).

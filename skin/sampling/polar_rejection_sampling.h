@@ -18,8 +18,10 @@
 // the linear density is inverted by a stable quadratic root), for s ≥ 1 from the constant s ≥ h
 // (acceptance ≥ π/4). The test (u·envelope)² ≤ h² needs no square root.
 #pragma once
+#include <array>
 #include <cmath>
 
+#include "skin/core/constants.h"
 #include "skin/core/random.h"
 #include "skin/core/vector3.h"
 
@@ -57,6 +59,13 @@ inline Azimuth sampleAzimuth(Rng& rng) {
   }
 }
 
+/// The azimuth 2πu for u uniform in [0, 1): uniform, from one number (a stratified one keeps its
+/// strata).
+inline Azimuth azimuthFromUniform(double u) {
+  const double phi = kTwoPi * u;
+  return {std::cos(phi), std::sin(phi)};
+}
+
 /// A unit direction about +z with density cosθ/π per steradian (z > 0; Malley's method: the disk
 /// point lifted to the hemisphere, same law as skin/sampling/cosine_sampling.h's
 /// sampleCosineHemisphere).
@@ -73,7 +82,10 @@ PolarCosSin sampleExponentialPolarCosSin(double meanAngleRad, Rng& rng);
 class SurfaceNormalPolarSampler {
  public:
   explicit SurfaceNormalPolarSampler(double aspectRatio);
-  PolarCosSin sample(Rng& rng) const;
+  /// `firstTrial` (may be null): the two uniform numbers in [0, 1) of the first rejection trial,
+  /// e.g. a pixel's stratified pair; later trials draw from `rng`. Every trial's pair is uniform
+  /// and independent of the others', so the accepted θ has the same law either way.
+  PolarCosSin sample(Rng& rng, const std::array<double, 2>* firstTrial = nullptr) const;
   double aspectRatio() const { return s_; }
 
  private:

@@ -4,9 +4,11 @@
 // the exit offsets' distribution (radius groups × side) by a chi-square over the groups' z-scores
 // — in the visible (Rayleigh spread across the band) and the near IR (θo of Algorithm 2 differing
 // across it), at 0°, 45° and 80° incidence, with and without the entry split; weights are finite
-// and non-negative, and mismatched bundles are refused.
+// and non-negative, also with the exit's draw and the first facet from stratified numbers, and
+// mismatched bundles are refused.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -79,13 +81,30 @@ Vec3 incidence(double degrees) {
   return {std::sin(a), 0, std::cos(a)};
 }
 
-ExitTallies sampleBundle(const Bundle& b, double degrees, bool split, int paths) {
+/// Path p's numbers for the exit's draw and the entry's first facet from a rank-1 lattice (each
+/// coordinate (p + 1/2)/paths or {p·g} for an irrational g): stratified, as a pixel sampler's are.
+struct LatticeNumbers {
+  std::array<double, 2> exit;
+  FacetNumbers facet;
+  LatticeNumbers(int p, int paths) {
+    auto frac = [p](double g) { return std::fmod(p * g, 1.0); };
+    exit = {(p + 0.5) / paths, frac(0.6180339887498949)};
+    facet.polar = {frac(0.7548776662466927), frac(0.5698402909980532)};
+    facet.azimuth = frac(0.4142135623730950);
+  }
+};
+
+ExitTallies sampleBundle(const Bundle& b, double degrees, bool split, int paths, bool stratified) {
   const ExitTableBundle sampler = b.sampler();
   ExitTallies t(sampler.size());
   Rng rng(7);
   SpectralPath path;
   for (int p = 0; p < paths; ++p) {
-    sampler.sample(incidence(degrees), rng, path, split);
+    const LatticeNumbers numbers(p, paths);
+    if (stratified)
+      sampler.sample(incidence(degrees), rng, path, split, &numbers.exit, &numbers.facet);
+    else
+      sampler.sample(incidence(degrees), rng, path, split);
     for (std::size_t i = 0; i < sampler.size(); ++i) {
       const double w = path.exitWeight[i];
       EXPECT_TRUE(std::isfinite(w) && w >= 0) << w;
@@ -122,15 +141,16 @@ double zScore(const RunningStatistic& a, const RunningStatistic& b) {
   return sigma > 0 ? (a.mean() - b.mean()) / sigma : (a.mean() == b.mean() ? 0.0 : 1e9);
 }
 
-void expectSameExits(const Bundle& b, double degrees, bool split) {
+void expectSameExits(const Bundle& b, double degrees, bool split, bool stratified = false) {
   const int paths = 60000;
-  const ExitTallies bundle = sampleBundle(b, degrees, split, paths);
+  const ExitTallies bundle = sampleBundle(b, degrees, split, paths, stratified);
   const ExitTallies alone = sampleEachTable(b, degrees, paths);
   double chi2 = 0;
   int dof = 0;
   for (std::size_t i = 0; i < b.tables.size(); ++i) {
     const std::string at = std::to_string(b.optics[i].wavelengthNm) + " nm at " +
-                           std::to_string(degrees) + "°" + (split ? ", split" : "") + ": ";
+                           std::to_string(degrees) + "°" + (split ? ", split" : "") +
+                           (stratified ? ", stratified" : "") + ": ";
     EXPECT_LT(std::fabs(zScore(bundle.surface[i], alone.surface[i])), 4.0)
         << at << "surface " << bundle.surface[i].mean() << " against " << alone.surface[i].mean();
     EXPECT_LT(std::fabs(zScore(bundle.subsurface[i], alone.subsurface[i])), 4.0)
@@ -162,6 +182,16 @@ TEST(ExitTableBundle, VisibleBandHasEachTablesExpectation) {
   const Bundle b({400, 450, 500, 550, 600, 650, 700}, tableSettings());
   for (double degrees : {0.0, 45.0, 80.0}) expectSameExits(b, degrees, false);
   expectSameExits(b, 45.0, true);
+}
+
+// The exit's draw and the entry's first facet from stratified numbers (a pixel sampler's, in the
+// renderer): the same expectations. The z-scores take the paths as independent, which stratified
+// numbers only make smaller, so the 4σ bounds hold a fortiori.
+TEST(ExitTableBundle, StratifiedNumbersKeepEachTablesExpectation) {
+  const Bundle b({400, 450, 500, 550, 600, 650, 700}, tableSettings());
+  expectSameExits(b, 0.0, true, true);
+  expectSameExits(b, 60.0, true, true);
+  expectSameExits(b, 45.0, false, true);
 }
 
 // The θo ramp of Algorithm 2 (780–1400 nm) and water's rise: tables that differ widely.

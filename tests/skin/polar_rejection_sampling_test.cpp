@@ -1,7 +1,9 @@
 // The walk's rejection samplers against the densities of the inversion samplers (chi-square), for
-// the paper's parameters and beyond; unit (cos, sin) pairs; the θo = 0 and bad-argument cases.
+// the paper's parameters and beyond, also with the first trial from stratified numbers; unit (cos,
+// sin) pairs; the azimuth from one number; the θo = 0 and bad-argument cases.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -79,10 +81,41 @@ TEST_P(SurfaceNormalRejectionChi2, MatchesSectionFourThreeDensity) {
 INSTANTIATE_TEST_SUITE_P(AspectRatios, SurfaceNormalRejectionChi2,
                          ::testing::Values(0.1, 0.25, 0.45, 1.0, 2.0, 30.0, 1e-6));
 
+// The first trial from a stratified pair (a rank-1 lattice, as a pixel sampler's numbers), later
+// ones from the Rng: the same law. The chi-square takes the draws as independent; stratified
+// first trials only lower its statistic.
+TEST_P(SurfaceNormalRejectionChi2, FirstTrialFromStratifiedNumbersKeepsTheDensity) {
+  const double s = GetParam();
+  const SurfaceNormalPolarSampler sampler(s);
+  Rng rng(14, static_cast<std::uint64_t>(1000 * std::fabs(std::log(s))));
+  std::vector<double> thetas(kSamples);
+  for (int i = 0; i < kSamples; ++i) {
+    const std::array<double, 2> first = {(i + 0.5) / kSamples,
+                                         std::fmod(i * 0.6180339887498949, 1.0)};
+    const PolarCosSin p = sampler.sample(rng, &first);
+    thetas[static_cast<std::size_t>(i)] = std::atan2(p.sinTheta, p.cosTheta);
+  }
+  const auto density = [s](double t) { return surfaceNormalPolarDensity(s, t); };
+  const double end = s < 0.01 ? 100.0 * s : kHalfPi;
+  const auto edges = test::equalProbabilityEdges(density, 0.0, end, 50);
+  EXPECT_TRUE(test::chi2Accepts(test::chi2Test1D(thetas, density, edges))) << "s = " << s;
+}
+
 TEST(SurfaceNormalRejection, RejectsAspectRatiosOutsideTheSamplersRange) {
   EXPECT_THROW(SurfaceNormalPolarSampler(0.0), std::invalid_argument);
   EXPECT_THROW(SurfaceNormalPolarSampler(1e11), std::invalid_argument);
   EXPECT_THROW(SurfaceNormalPolarSampler(std::nan("")), std::invalid_argument);
+}
+
+TEST(AzimuthFromUniform, HandValuesAndUnitLength) {
+  const Azimuth zero = azimuthFromUniform(0.0), quarter = azimuthFromUniform(0.25);
+  EXPECT_EQ(zero.cosPhi, 1.0);
+  EXPECT_EQ(zero.sinPhi, 0.0);
+  EXPECT_NEAR(quarter.cosPhi, 0.0, 1e-15);
+  EXPECT_NEAR(quarter.sinPhi, 1.0, 1e-15);
+  const Azimuth a = azimuthFromUniform(0.625);  // 225°
+  EXPECT_NEAR(a.cosPhi, -std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(a.sinPhi, -std::sqrt(0.5), 1e-15);
 }
 
 TEST(DiskSamplers, AzimuthIsUniformAndMalleyDirectionsAreCosineWeighted) {
