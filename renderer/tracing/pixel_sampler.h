@@ -8,8 +8,7 @@
 //
 // independent: every number from skin::Rng(seed, pixel, sample), drawn in the order above, with the
 //   band or channel stratified over blocks of `strata` consecutive samples of the pixel, each block
-//   rotated by its own stream (Cranley–Patterson): the renderer's numbers before samplers existed,
-//   bit for bit.
+//   rotated by its own stream (Cranley–Patterson).
 // sobol: the first kLowDiscrepancyDimensions dimensions from Owen-scrambled Sobol' points, padded
 //   (pbrt-v4's PaddedSobolSampler, Burley 2020 "Practical Hash-based Owen Scrambling"): each 1-D
 //   request is Sobol' dimension 0 (van der Corput), each 2-D request dimensions 0 and 1 (a
