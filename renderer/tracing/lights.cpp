@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <numeric>
+#include <sstream>
 
 #include "renderer/scene/emission_spectrum.h"
+#include "renderer/tracing/light_selection.h"
 #include "skin/core/constants.h"
 
 namespace hylios {
-namespace {}
 
 LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry,
                    const std::vector<double>& channelWavelengths)
@@ -59,6 +62,68 @@ LightSet::LightSet(const SceneDesc& scene, const EmbreeScene& geometry,
     }
     lights_.push_back(std::move(light));
   }
+  chooseSelectionProbabilities();
+}
+
+void LightSet::chooseSelectionProbabilities() {
+  std::vector<std::size_t> receivers;
+  for (std::size_t shape = 0; shape < lightOfShape_.size(); ++shape)
+    if (lightOfShape_[shape] < 0) receivers.push_back(shape);
+  const std::vector<glm::dvec3> points = receiverPoints(geometry_, receivers);
+  std::vector<double> contribution(lights_.size(), 0.0);
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    const Light& light = lights_[i];
+    double irradiance = 0;  // the factor of light_selection.h's table, summed over the points
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const glm::dvec3 toPoint = points[j] - light.position;
+      const double d2 = glm::dot(toPoint, toPoint);
+      switch (light.kind) {
+        case LightDesc::Kind::Point:
+        case LightDesc::Kind::Spot:
+          if (d2 > 0) irradiance += spotFalloff(light, toPoint / std::sqrt(d2)) / d2;
+          break;
+        case LightDesc::Kind::Area:
+          irradiance += areaLightSolidAngle(geometry_, light.shape, points[j], j);
+          break;
+        case LightDesc::Kind::Environment:
+          irradiance += kPi;
+          break;
+      }
+    }
+    const double meanEmission =
+        light.emission.empty()
+            ? 0.0
+            : std::accumulate(light.emission.begin(), light.emission.end(), 0.0) /
+                  static_cast<double>(light.emission.size());
+    contribution[i] = meanEmission * irradiance;
+  }
+  selection_ = lightSelectionProbabilities(contribution);
+  selectionCdf_.resize(selection_.size());
+  std::partial_sum(selection_.begin(), selection_.end(), selectionCdf_.begin());
+}
+
+std::string LightSet::selectionReport(const SceneDesc& scene) const {
+  if (lights_.size() < 2) return "";
+  std::ostringstream out;
+  out << "  next-event light choice:";
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    switch (lights_[i].kind) {
+      case LightDesc::Kind::Point:
+        out << " point";
+        break;
+      case LightDesc::Kind::Spot:
+        out << " spot";
+        break;
+      case LightDesc::Kind::Area:
+        out << " area '" << scene.shapes[lights_[i].shape].name << "'";
+        break;
+      case LightDesc::Kind::Environment:
+        out << " environment";
+        break;
+    }
+    out << " " << std::setprecision(3) << selection_[i] << (i + 1 < lights_.size() ? "," : "\n");
+  }
+  return out.str();
 }
 
 double LightSet::spotFalloff(const Light& light, const glm::dvec3& towardPoint) const {
@@ -77,10 +142,13 @@ double LightSet::emission(const LightSample& sample, std::size_t channel) const 
 std::optional<LightSample> LightSet::sampleGeometry(const glm::dvec3& point, double uSelect,
                                                     double u0, double u1, double u2) const {
   if (lights_.empty()) return std::nullopt;
-  const double count = static_cast<double>(lights_.size());
-  const std::size_t index = std::min(lights_.size() - 1, static_cast<std::size_t>(uSelect * count));
+  const std::size_t index = std::min<std::size_t>(
+      static_cast<std::size_t>(
+          std::upper_bound(selectionCdf_.begin(), selectionCdf_.end(), uSelect) -
+          selectionCdf_.begin()),
+      lights_.size() - 1);
   const Light& light = lights_[index];
-  const double select = 1 / count;
+  const double select = selection_[index];
   LightSample s;
   s.light = index;
   switch (light.kind) {
@@ -142,7 +210,7 @@ double LightSet::environmentRadiance(std::size_t channel) const {
 }
 
 double LightSet::environmentPdf() const {
-  return environment_ >= 0 ? 1.0 / (static_cast<double>(lights_.size()) * 4 * kPi) : 0.0;
+  return environment_ >= 0 ? selection_[static_cast<std::size_t>(environment_)] / (4 * kPi) : 0.0;
 }
 
 double LightSet::emittedRadiance(const SurfaceHit& hit, const glm::dvec3& towardViewer,
@@ -157,7 +225,8 @@ double LightSet::emitterPdf(const glm::dvec3& from, const SurfaceHit& hit) const
   const double d2 = glm::dot(toLight, toLight);
   const double cosLight = -glm::dot(hit.geometricNormal, toLight) / std::sqrt(d2);
   if (!(cosLight > 0)) return 0;
-  return d2 / (cosLight * geometry_.shapeArea(hit.shape) * static_cast<double>(lights_.size()));
+  const double select = selection_[static_cast<std::size_t>(lightOfShape_[hit.shape])];
+  return select * d2 / (cosLight * geometry_.shapeArea(hit.shape));
 }
 
 }  // namespace hylios

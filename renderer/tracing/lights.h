@@ -10,7 +10,8 @@
 // |             | winding for meshes and planes, outward for spheres)                            |
 // | environment | radiance L(λ) arriving from every direction (at infinity)                     |
 //
-// Next-event estimation picks one light uniformly (probability 1/count), then a point on it:
+// Next-event estimation picks one light with a probability by its estimated share of the light
+// that reaches the scene (renderer/tracing/light_selection.h), then a point on it:
 // area lights uniformly in area (pdf converted to solid angle, d²/|cosθ_light|), the environment
 // uniformly over the sphere of directions (1/4π sr⁻¹). Point and spot lights are delta lights:
 // only next-event estimation reaches them.
@@ -19,6 +20,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "renderer/scene/scene.h"
@@ -54,6 +56,11 @@ class LightSet {
   bool visible(const glm::dvec3& origin, const LightSample& sample, double offset) const;
 
   std::size_t count() const { return lights_.size(); }
+  /// The probability with which sampleGeometry() picks light `light` (light_selection.h).
+  double selectionProbability(std::size_t light) const { return selection_.at(light); }
+  /// A log line with every light's probability (its kind, and an area light's shape name from
+  /// `scene`, the scene this set was built from); empty for fewer than two lights.
+  std::string selectionReport(const SceneDesc& scene) const;
 
   /// One light sample for a shading point, without a channel (the light's choice and point do not
   /// depend on it): value = geometry; emission(sample, c) gives the value at channel c. nullopt
@@ -92,9 +99,11 @@ class LightSet {
     std::vector<double> emission;  ///< per channel
   };
   double spotFalloff(const Light& light, const glm::dvec3& towardPoint) const;
+  void chooseSelectionProbabilities();  ///< fills selection_ and selectionCdf_
 
   const EmbreeScene& geometry_;
   std::vector<Light> lights_;
+  std::vector<double> selection_, selectionCdf_;  ///< per light: p_i, and its running sum
   std::vector<int> lightOfShape_;
   std::vector<bool> convexShape_;
   int environment_ = -1;

@@ -66,6 +66,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
          << "'); scene set up in " << setUp.count() << " s\n"
          << integrator.tableWalksReport();
   }
+  if (log) *log << integrator.lights().selectionReport(scene);
   std::string degenerate;
   if (integrator.skippedDegenerateTriangles(&degenerate) > 0 && log) *log << degenerate;
   if (settings.explain && log) *log << integrator.effectPlanReport();

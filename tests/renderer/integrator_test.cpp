@@ -1,6 +1,7 @@
 // The path tracer against answers known in closed form: white furnace, direct light from point
-// and spherical area lights, the skin material's total reflectance, determinism across thread
-// counts. Monte Carlo assertions state their standard error σ and allow 4σ.
+// and spherical area lights (alone and with the environment), the skin material's total
+// reflectance, determinism across thread counts. Monte Carlo assertions state their standard error
+// σ and allow 4σ.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -176,6 +177,49 @@ TEST(Integrator, SphericalAreaLightOnADiffusePlaneMatchesItsSolidAngle) {
   const double mean = sum / n, sigma = std::sqrt((sum2 / n - mean * mean) / (n - 1));
   EXPECT_NEAR(mean, 0.8 * 2 * 0.0625, 4 * sigma) << "σ " << sigma;
   EXPECT_LT(sigma, 0.002);
+}
+
+TEST(Integrator, AnAreaLightAndTheEnvironmentSumOverTheirProjectedSolidAngles) {
+  // The spherical lamp (R = 0.8, Le = 2, centre at height D = 2) over a diffuse plane (ρ = 0.8,
+  // side 4) in an environment L = 0.5: at the foot point the lamp covers a cap of projected solid
+  // angle π sin²α (sin α = R/D) and hides that much of the sky, so L_out = ρ(L + (Le − L) sin²α)
+  // = 0.592. The two lights are chosen with unequal probabilities (light_selection.h), which
+  // next-event estimation and the MIS weights of the rays that hit the lamp or escape must share.
+  SceneDesc scene = sphereScene(diffuse(0.8), 0, 1);
+  scene.shapes[0].kind = ShapeDesc::Kind::Plane;
+  scene.shapes[0].planeNormal = {0, 0, 1};
+  scene.shapes[0].planeSize = 4;
+  MaterialDesc black = diffuse(0);
+  black.name = "black";
+  scene.materials.push_back(black);
+  ShapeDesc lamp;
+  lamp.kind = ShapeDesc::Kind::Sphere;
+  lamp.name = "lamp";
+  lamp.centre = {0, 0, 2};
+  lamp.radius = 0.8;
+  lamp.material = "black";
+  scene.shapes.push_back(lamp);
+  LightDesc area, environment;
+  area.kind = LightDesc::Kind::Area;
+  area.shape = "lamp";
+  area.emission = constantSpectrum(2);
+  environment.kind = LightDesc::Kind::Environment;
+  environment.emission = constantSpectrum(0.5);
+  scene.lights = {area, environment};
+  const Integrator integrator(scene, {550});
+  ASSERT_GT(std::fabs(integrator.lights().selectionProbability(0) - 0.5), 0.1);
+  double sum = 0, sum2 = 0;
+  const int n = 40000;
+  RenderStats stats;
+  for (int i = 0; i < n; ++i) {
+    hylios::skin::Rng rng(10, 0, static_cast<std::uint64_t>(i));
+    const double L = integrator.radiance({{0.0, 0.0, 0.5}, {0, 0, -1}}, 0, rng, stats);
+    sum += L;
+    sum2 += L * L;
+  }
+  const double mean = sum / n, sigma = std::sqrt((sum2 / n - mean * mean) / (n - 1));
+  EXPECT_NEAR(mean, 0.8 * (0.5 + 1.5 * 0.16), 4 * sigma) << "σ " << sigma;
+  EXPECT_LT(sigma, 0.004);
 }
 
 TEST(Integrator, SkinSphereInAUniformEnvironmentReflectsTheWalksDiffuseAlbedo) {
