@@ -518,16 +518,18 @@ RenderStats Integrator::render(Film& film, const RenderOptions& options) const {
   // With a noise target the film's estimate is taken at sample counts that depend only on the
   // film (never on timing), so a render stops at the same spp on any machine: first at
   // kMinNoiseSamples, then at done × (noise/target)² (at most ×4), at least kNoiseCheckGranule
-  // more, rounded up to a multiple of kNoiseCheckGranule (header): the rounding is the margin.
+  // more, rounded down to a multiple of kNoiseCheckGranule (header): a check that falls short
+  // costs one more check kNoiseCheckGranule later, one rounded up may pass over the count
+  // that would have done.
   int nextCheck = std::max(kMinNoiseSamples, done);
   auto targetReached = [&] {
     total.noise = noiseOf(film);
     const double ratio = worstNoise(total.noise) / *options.noiseTarget;
     if (ratio <= 1) return total.noiseTargetReached = true;
-    const double wanted = std::ceil(done * std::min(ratio * ratio, 4.0));
-    const int next = std::max(static_cast<int>(wanted), done + kNoiseCheckGranule);
-    nextCheck =
-        std::min(spp, (next + kNoiseCheckGranule - 1) / kNoiseCheckGranule * kNoiseCheckGranule);
+    const int wanted = static_cast<int>(done * std::min(ratio * ratio, 4.0));
+    const int next =
+        std::max(wanted / kNoiseCheckGranule * kNoiseCheckGranule, done + kNoiseCheckGranule);
+    nextCheck = std::min(spp, next);
     return false;
   };
   while (done < spp) {

@@ -25,6 +25,7 @@ TEST(WavelengthList, CommaList) {
   EXPECT_DOUBLE_EQ(w[1], 550.5);
 }
 
+namespace {
 void expectError(const std::string& text, const std::string& fragment) {
   try {
     parseWavelengthList(text);
@@ -33,6 +34,7 @@ void expectError(const std::string& text, const std::string& fragment) {
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
 }
+}  // namespace
 
 TEST(WavelengthList, ErrorsNameTheProblem) {
   expectError("250:2500:0", "'0' is not a positive wavelength");
