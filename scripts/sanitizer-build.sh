@@ -24,7 +24,6 @@ jobs=$(nproc 2>/dev/null || echo 2)
 # -O2 with line tables only (-gline-tables-only): sanitizer reports keep file:line, the objects
 # and links stay small. MPI is off: Open MPI's own allocations trip LeakSanitizer (cmake/Mpi.cmake).
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
   -DHYLIOS_FUZZ=ON -DHYLIOS_BUILD_BENCHMARKS=OFF -DHYLIOS_MPI=OFF \
   -DHYLIOS_FUZZ_SECONDS="${HYLIOS_FUZZ_SECONDS:-20}" >/dev/null

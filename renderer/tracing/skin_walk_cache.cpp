@@ -45,8 +45,7 @@ SkinWalkCache::SkinWalkCache(const skin::Specimen& specimen, double minMultiplie
       rootLo_(std::sqrt(lo_)),
       rootHi_(std::sqrt(hi_)),
       levels_(hi_ > lo_ ? levels : 1),
-      channels_(channelWavelengths.size()),
-      effectTolerance_(effectTolerance) {
+      channels_(channelWavelengths.size()) {
   if (!(effectTolerance >= 0 && effectTolerance <= 1))
     throw SceneError(where,
                      "effect tolerance must lie in [0, 1], got " + std::to_string(effectTolerance));

@@ -89,7 +89,6 @@ class SkinWalkCache {
   std::vector<skin::EffectPlan> plans_;  ///< per distinct wavelength; empty when ε = 0
   std::vector<std::optional<skin::SpectralWalk>> spectralWalks_;  ///< [level * bundles + bundle]
   std::size_t bundleCount_ = 0;
-  double effectTolerance_ = 0;
 };
 
 }  // namespace hylios
