@@ -4,7 +4,7 @@
 # visible (sRGB) and at 1100 nm (pseudo-colour) — as spectral EXRs, PNG previews and a contact
 # sheet, at 512×512: each band renders until its estimated median per-pixel noise on the head is
 # 5 % (every band, and R, G, B of the visible; at most 1024 spp). The scenes use exit tables
-# (skin_mode = "table"), built on the first run (about a tenth of its 45–90 CPU-s, by machine) and
+# (skin_mode = "table"), built on the first run (about a tenth of its 35–70 CPU-s, by machine) and
 # cached in ~/.cache/hylios.
 set -euo pipefail
 cd "$(dirname "$0")/.."
