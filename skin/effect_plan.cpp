@@ -80,9 +80,8 @@ double pathLengthTableKey(double x) {
 /// Probability that one melanosome interaction in `layer` absorbs the ray (θo = 0: the only ones
 /// that change it), from the path-length table (skin/melanosome_path_lengths.h):
 /// p1 = mean of 1 − exp(−κL) over the table's samples, with its standard error; an interaction
-/// meets w = floor(m) or w + 1 melanosomes (probability m − w) in complexes, one when dispersed,
-/// and absorbs with 1 − (1 − p1)^count. The upper value uses p1 + 3 s.e. (monotone in p1).
-/// Exactly 0 without interior absorption.
+/// meets m melanosomes in complexes, one when dispersed, and absorbs with 1 − (1 − p1)^count. The
+/// upper value uses p1 + 3 s.e. (monotone in p1). Exactly 0 without interior absorption.
 struct AbsorptionFraction {
   double estimate = 0, upper = 0;
 };
@@ -96,14 +95,9 @@ AbsorptionFraction melanosomeAbsorptionFraction(const SkinOptics& optics, Layer 
   RunningStatistic absorbed;
   for (double lengthPerMinorAxis : table->pathLengths())
     absorbed.add(-std::expm1(-kappa * lengthPerMinorAxis));
-  const double whole = m.inComplexes ? std::floor(m.melanosomesPerComplex) : 1.0;
-  const double fraction = m.inComplexes ? m.melanosomesPerComplex - whole : 0.0;
-  auto perInteraction = [&](double p1) {
-    const double p = std::min(1.0, p1);
-    auto forCount = [p](double count) {
-      return count > 0 ? -std::expm1(count * std::log1p(-p)) : 0.0;
-    };
-    return (1 - fraction) * forCount(whole) + fraction * forCount(whole + 1);
+  const double count = m.inComplexes ? static_cast<double>(m.melanosomesPerComplex) : 1.0;
+  auto perInteraction = [count](double p1) {  // 1 − (1 − p)^count
+    return -std::expm1(count * std::log1p(-std::min(1.0, p1)));
   };
   return {perInteraction(absorbed.mean()),
           perInteraction(absorbed.mean() + kConfidenceZ * absorbed.standardError())};

@@ -60,7 +60,7 @@ void hashOptics(ContentHash& h, const SkinOptics& o) {
         .addDouble(m.semiMajorAxisCm)
         .addBool(m.inComplexes)
         .addDouble(m.complexRadiusCm);
-    h.addDouble(m.melanosomesPerComplex).addDouble(m.mu_perCm);
+    h.addDouble(static_cast<double>(m.melanosomesPerComplex)).addDouble(m.mu_perCm);
   }
   h.addDouble(o.melanosomeInteriorMuA_perCm).addDouble(o.melaninRefractiveIndex);
   h.addDouble(o.meanScatteringAngleRad).addDouble(o.surfaceAspectRatio);

@@ -40,15 +40,12 @@ MelanosomeLayer::MelanosomeLayer(const SkinOptics& optics, Layer layer,
                       optics[layer].melanosome.semiMajorAxisCm, optics.melanosomeInteriorMuA_perCm,
                       optics[layer].refractiveIndex, optics.melaninRefractiveIndex) {
   const MelanosomeOptics& m = optics[layer].melanosome;
-  inComplexes_ = m.inComplexes;
-  if (inComplexes_) {
-    if (!(m.melanosomesPerComplex >= 0 && m.melanosomesPerComplex < 1e9))
+  if (m.inComplexes) {
+    if (!(m.melanosomesPerComplex >= 1 && m.melanosomesPerComplex < 1000000000u))
       throw std::invalid_argument(
           "melanosome interaction: " + std::to_string(m.melanosomesPerComplex) +
-          " melanosomes per complex in " + std::string(layerName(layer)) + " is outside [0, 1e9)");
-    const double whole = std::floor(m.melanosomesPerComplex);
-    wholeCount_ = static_cast<unsigned>(whole);
-    fractionalCount_ = m.melanosomesPerComplex - whole;
+          " melanosomes per complex in " + std::string(layerName(layer)) + " is outside [1, 1e9)");
+    count_ = m.melanosomesPerComplex;
   }
   meanAngleRad_ = optics.meanScatteringAngleRad;
   const bool angleOk = meanAngleRad_ == 0.0 || (meanAngleRad_ >= kMinExponentialMeanAngleRad &&
@@ -67,26 +64,14 @@ void MelanosomeLayer::tabulate(double nLayer, double nMelanin) {
   const auto table = MelanosomePathLengths::shared(melanosomeTableKey(geometry_.aspect),
                                                    melanosomeTableKey(nMelanin / nLayer));
   const double one = table->absorptionProbability(muA_perMinorAxis_);  // one pass over the table
-  absorbedByWhole_ =
-      MelanosomePathLengths::absorptionByCount(one, wholeCount_);  // count 1 when dispersed
-  absorbedByWholePlusOne_ = MelanosomePathLengths::absorptionByCount(one, wholeCount_ + 1);
+  absorbedByCount_ = MelanosomePathLengths::absorptionByCount(one, count_);
 }
 
-double MelanosomeLayer::tabulatedAbsorption(unsigned count) const {
+double MelanosomeLayer::tabulatedAbsorption() const {
   if (!tabulated_)
     throw std::logic_error(
         "MelanosomeLayer::tabulatedAbsorption: the layer traces its melanosomes");
-  if (count == wholeCount_) return absorbedByWhole_;
-  if (count == wholeCount_ + 1 && inComplexes_) return absorbedByWholePlusOne_;
-  throw std::invalid_argument("MelanosomeLayer::tabulatedAbsorption: an interaction meets " +
-                              std::to_string(wholeCount_) +
-                              (inComplexes_ ? " or " + std::to_string(wholeCount_ + 1) : "") +
-                              " melanosomes, not " + std::to_string(count));
-}
-
-unsigned MelanosomeLayer::melanosomesToMeet(Rng& rng) const {
-  if (!inComplexes_) return 1;
-  return wholeCount_ + (rng.uniform() < fractionalCount_ ? 1u : 0u);
+  return absorbedByCount_;
 }
 
 bool MelanosomeLayer::absorbedInOne(Rng& rng) const {
@@ -100,11 +85,10 @@ bool MelanosomeLayer::absorbedInOne(Rng& rng) const {
 
 MelanosomeEvent MelanosomeLayer::interact(const Vec3& direction, Rng& rng) const {
   MelanosomeEvent event;
-  const unsigned count = melanosomesToMeet(rng);
+  const unsigned count = count_;
   if (tabulated_) {  // one uniform for all `count` melanosomes: absorbed with 1 − q^count
     event.melanosomesMet = count;
-    const double absorbed = count == wholeCount_ ? absorbedByWhole_ : absorbedByWholePlusOne_;
-    if (count > 0 && rng.uniform() < absorbed) {
+    if (rng.uniform() < absorbedByCount_) {
       event.absorbed = true;
       return event;
     }

@@ -1,8 +1,8 @@
 // A ray meeting a melanosome or a melanosome complex (paper Sec. 4.2.2).
 //
 // Dispersed melanosomes: one prolate spheroid. Complexes: up to m melanosomes are met in turn
-// (m = complex diameter / minor axis; a fractional m is rounded up with probability equal to its
-// fractional part, so the mean number met is m). For each melanosome: an orientation from Eq. 8,
+// (m = the whole part of complex diameter / minor axis, MelanosomeOptics; the walk stops at the
+// first that absorbs the ray). For each melanosome: an orientation from Eq. 8,
 // a hit point uniform over the silhouette facing the ray, a Fresnel test on entry (epidermis →
 // melanin), then inside: an absorption test over the chord (Eq. 1 with the melanosome's melanin
 // coefficient); at the far wall a Fresnel test (melanin → epidermis, with total internal
@@ -57,24 +57,22 @@ class MelanosomeLayer {
   MelanosomeEvent interact(const Vec3& direction, Rng& rng) const;
   /// One melanosome met by a ray: true if the ray is absorbed inside it (always traced).
   bool absorbedInOne(Rng& rng) const;
-  /// Tabulated mode: the probability that `count` melanosomes absorb (1 − q^count); the traced
-  /// mode's law, for the counts an interaction can meet (floor(m) and floor(m) + 1). Throws
-  /// std::logic_error in the traced mode and std::invalid_argument for another count.
-  double tabulatedAbsorption(unsigned count) const;
+  /// Tabulated mode: the probability that an interaction's melanosomes absorb, 1 − q^count
+  /// (count = m in complexes, 1 when dispersed): the traced mode's law. Throws std::logic_error
+  /// in the traced mode.
+  double tabulatedAbsorption() const;
+  /// Melanosomes an interaction meets unless one absorbs the ray: m in complexes, else 1.
+  unsigned melanosomesPerInteraction() const { return count_; }
   bool tabulated() const { return tabulated_; }
 
  private:
-  unsigned melanosomesToMeet(Rng& rng) const;
   void tabulate(double nLayer, double nMelanin);
   MelanosomeGeometry geometry_;  // γ = c/a, 1/γ, epidermis → melanin and back
   double muA_perMinorAxis_ = 0;  // interior coefficient × a (chords are in units of a)
-  bool inComplexes_ = false;
-  unsigned wholeCount_ = 1;     // floor(m)
-  double fractionalCount_ = 0;  // m − floor(m)
-  double meanAngleRad_ = 0;     // θo of Algorithm 2
+  unsigned count_ = 1;           // melanosomes per interaction: m in complexes, 1 dispersed
+  double meanAngleRad_ = 0;      // θo of Algorithm 2
   bool tabulated_ = false;
-  double absorbedByWhole_ = 0;         // tabulated: 1 − q^floor(m)
-  double absorbedByWholePlusOne_ = 0;  // tabulated: 1 − q^(floor(m) + 1)
+  double absorbedByCount_ = 0;  // tabulated: 1 − q^count
 };
 
 /// One melanosome (semi-axes a ≤ c in cm): returns true if the ray is absorbed inside it. The

@@ -71,7 +71,10 @@ MelanosomeOptics layerMelanosomeOptics(const Specimen& s, Layer layer) {
   if (m.inComplexes) {
     const double diameterCm = diameterRatio * 2.0 * m.semiMajorAxisCm;
     m.complexRadiusCm = 0.5 * diameterCm;
-    m.melanosomesPerComplex = diameterCm / (2.0 * m.semiMinorAxisCm);
+    // "At most m" melanosomes, m the diameter over the minor axis: a count, so its whole part
+    // (the 1e-9 keeps a ratio that is whole on paper, e.g. 0.34 / 0.17, from rounding down).
+    m.melanosomesPerComplex =
+        static_cast<unsigned>(std::floor(diameterCm / (2.0 * m.semiMinorAxisCm) + 1e-9));
     m.mu_perCm = 3.0 / m.complexRadiusCm * v / 4.0;  // Eq. 6 with S/V = 3/r_s
   } else {
     const double surfaceToVolume =

@@ -18,11 +18,13 @@ namespace hylios::skin {
 
 /// Geometry of the melanin particles in a layer (Sec. 4.2.2).
 struct MelanosomeOptics {
-  double semiMinorAxisCm = 0;        ///< a of Eq. 7 (after the per-layer degradation scale)
-  double semiMajorAxisCm = 0;        ///< c of Eq. 7
-  bool inComplexes = false;          ///< true: complexes (spheres) hold the melanosomes
-  double complexRadiusCm = 0;        ///< r_s; 0 when dispersed
-  double melanosomesPerComplex = 0;  ///< m = complex diameter / minor axis (may be fractional)
+  double semiMinorAxisCm = 0;  ///< a of Eq. 7 (after the per-layer degradation scale)
+  double semiMajorAxisCm = 0;  ///< c of Eq. 7
+  bool inComplexes = false;    ///< true: complexes (spheres) hold the melanosomes
+  double complexRadiusCm = 0;  ///< r_s; 0 when dispersed
+  /// m: the most melanosomes a ray meets in a complex, the whole part of complex diameter /
+  /// minor axis (Sec. 4.2.2: "at most m"; docs/interpretations.md); 0 when dispersed.
+  unsigned melanosomesPerComplex = 0;
   double mu_perCm = 0;  ///< geometric attenuation coefficient, Eq. 6 (0 if no melanosomes)
 };
 

@@ -173,11 +173,7 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
       s.geometry.entering = FresnelPair(lo.refractiveIndex, first.melaninRefractiveIndex);
       s.geometry.leaving = FresnelPair(first.melaninRefractiveIndex, lo.refractiveIndex);
       s.semiMinorAxisCm = m.semiMinorAxisCm;
-      s.inComplexes = m.inComplexes;
-      if (m.inComplexes) {
-        s.wholeCount = static_cast<unsigned>(std::floor(m.melanosomesPerComplex));
-        s.fractionalCount = m.melanosomesPerComplex - std::floor(m.melanosomesPerComplex);
-      }
+      if (m.inComplexes) s.count = m.melanosomesPerComplex;
       if (options.tabulatedMelanosomes)
         s.table = MelanosomePathLengths::shared(
             melanosomeTableKey(s.geometry.aspect),
@@ -288,8 +284,7 @@ inline std::uint32_t SpectralWalk::takeTableIndex(State& s, Rng& rng) {
 
 void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
   const Melanosomes& m = *melanosomes_[k];
-  const unsigned count =
-      m.inComplexes ? m.wholeCount + (rng.uniform() < m.fractionalCount ? 1u : 0u) : 1u;
+  const unsigned count = m.count;
   double chordsOverA = 0;
   if (m.table) {  // a local sum, so that the table's loads (cache misses) overlap
     const float* table = m.table->pathLengthsSingle().data();
@@ -298,7 +293,7 @@ void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
     chordsOverA = sum;
     // Draws the next meeting's indices now and prefetches them from this layer's table (most
     // meetings follow one in the same layer; in another layer they are still uniform indices).
-    const unsigned ahead = std::min(m.wholeCount + 1, kPendingTableIndices - 2);
+    const unsigned ahead = std::min(m.count, kPendingTableIndices - 2);
     while (s.pendingCount < ahead) drawTableIndices(s, rng);
     for (unsigned i = 0; i < s.pendingCount; ++i) __builtin_prefetch(table + s.pendingIndex[i]);
   } else {

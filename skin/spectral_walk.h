@@ -173,9 +173,7 @@ class SpectralWalk {
   struct Melanosomes {  ///< a layer's melanosome shape (λ-free)
     MelanosomeGeometry geometry;
     double semiMinorAxisCm = 0;
-    bool inComplexes = false;
-    unsigned wholeCount = 1;
-    double fractionalCount = 0;
+    unsigned count = 1;  ///< melanosomes per meeting: m in complexes, 1 dispersed
     std::shared_ptr<const MelanosomePathLengths> table;  ///< tabulated mode
   };
   class State;

@@ -54,23 +54,27 @@ double ncsuRms(const std::string& specimen, const std::string& object, double* w
 }  // namespace
 
 // Paper Fig. 7: "computed using the pigmentation datasets S1 and S2" for NCSU curves 117 (left)
-// and 113 (right). The project's goal is an RMS difference ≤ 0.03. Measured at this commit:
-// S1/117 ≈ 0.031, S2/113 ≈ 0.044 (the model is darker than object 113 above 600 nm; 0.045 before
-// the layers' dispersion followed Hale & Querry, docs/uv-absorbers.md). The bounds
-// below are those values plus 3× the largest per-point σ (≈ 0.0036 at 2e4 rays): they catch a
-// regression of the model without pretending the goal is met for S2.
+// and 113 (right), with Table 1's values. Issue 14's goal: RMS difference ≤ 0.03 each. The bound
+// is the goal itself. Its margin against the walk's noise: the RMS of a 31-point curve moves by
+// about σ_point/√31 between seeds (σ_point ≤ 0.0036 at 2·10⁴ rays), and `hylios spectrum
+// --estimator per-wavelength --rays 20000` with seeds 1–4 gave S2 0.0283–0.0290 (spread 0.0004)
+// against 0.0289 ± 0.001 from the spectral walk at 10⁵ rays (docs/validation.md); S1 is at 0.015.
+// So S2 sits about 3 seed spreads below the bound, S1 far below it. Before the complexes met at
+// most ⌊m⌋ = 4 melanosomes (docs/interpretations.md) the figures were 0.030 and 0.044.
 TEST(SkinValidation, S1MatchesNcsuObject117) {
   double sigma = 0;
   const double rms = ncsuRms("S1", "obj117", &sigma);
   std::cout << "S1 vs NCSU obj117: RMS " << rms << " (max point σ " << sigma << ")\n";
-  EXPECT_LT(rms, 0.031 + 3 * sigma);
+  EXPECT_LT(rms, 0.03);
+  EXPECT_GT(rms, 0.005);  // the model is not the measurement: a far smaller RMS means a mix-up
 }
 
 TEST(SkinValidation, S2MatchesNcsuObject113) {
   double sigma = 0;
   const double rms = ncsuRms("S2", "obj113", &sigma);
   std::cout << "S2 vs NCSU obj113: RMS " << rms << " (max point σ " << sigma << ")\n";
-  EXPECT_LT(rms, 0.044 + 3 * sigma);
+  EXPECT_LT(rms, 0.03);
+  EXPECT_GT(rms, 0.005);
 }
 
 // Paper Fig. 9 (top): S3 at 8° shows the water valleys at 1450 and 1940 nm and the

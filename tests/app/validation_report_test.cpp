@@ -32,8 +32,8 @@ struct Reference {
   double rms, meanError, noise;
 };
 constexpr Reference kReferences[] = {
-    {"S1", "obj117", 0.0297, -0.0262, 0.0011},
-    {"S2", "obj113", 0.0436, -0.0324, 0.0010},
+    {"S1", "obj117", 0.0151, -0.0094, 0.0011},
+    {"S2", "obj113", 0.0290, -0.0179, 0.0010},
 };
 
 TEST(ValidationReport, NcsuFiguresMatchTheCommittedReport) {
@@ -56,7 +56,7 @@ TEST(ValidationReport, NcsuFiguresMatchTheCommittedReport) {
 // docs/validation.md, Fig. 9: S3 at 8° against the lightest quarter of the NIST set, the excess of
 // the model over the group's highest measured reflectance at 300 nm (the largest of 250–310 nm),
 // with the model's σ there at 10^5 rays.
-constexpr double kS3ExcessAt300Nm = 0.0386, kS3SigmaAt300Nm = 0.00038;
+constexpr double kS3ExcessAt300Nm = 0.0446, kS3SigmaAt300Nm = 0.00038;
 
 TEST(ValidationReport, NistUvFigureMatchesTheCommittedReport) {
   const SkinPopulation nist = loadSkinPopulation(kNcsu.parent_path() / "nist_cooksey2017_skin.csv");

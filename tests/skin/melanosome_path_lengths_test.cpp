@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <thread>
 #include <vector>
@@ -236,7 +237,7 @@ TEST(MelanosomePathLengths, RejectsBadInput) {
 }
 
 namespace {
-/// A basal layer of complexes holding 2.3 melanosomes each (S1-like melanosome).
+/// A basal layer of complexes holding 3 melanosomes each (S1-like melanosome).
 SkinOptics complexOptics(double interiorMuA_perCm) {
   SkinOptics optics;
   optics.melaninRefractiveIndex = 1.7;
@@ -245,7 +246,7 @@ SkinOptics complexOptics(double interiorMuA_perCm) {
   LayerOptics& basal = optics.layers[index(Layer::StratumBasale)];
   basal.thicknessCm = 0.001;
   basal.refractiveIndex = 1.4;
-  basal.melanosome = {0.085e-4, 0.205e-4, true, 0.2e-4, 2.3, 100.0};
+  basal.melanosome = {0.085e-4, 0.205e-4, true, 0.2e-4, 3, 100.0};
   return optics;
 }
 }  // namespace
@@ -255,23 +256,26 @@ TEST(MelanosomeLayerTabulated, InteractionsAbsorbLikeTracedOnes) {
   const MelanosomeLayer traced(optics, Layer::StratumBasale);
   const MelanosomeLayer tabulated(optics, Layer::StratumBasale, MelanosomeAbsorption::Tabulated);
   // The layer's table: γ = 0.205/0.085, ρ = 1.7/1.4 (its key is rounded to 12 digits, so the
-  // lengths agree to ~1e-12), κ = 1e5 cm⁻¹ × 0.085e-4 cm; counts 2 and 3 as 1 − q², 1 − q³.
+  // lengths agree to ~1e-12), κ = 1e5 cm⁻¹ × 0.085e-4 cm; 3 melanosomes absorb with 1 − q³.
   const MelanosomePathLengths table(0.205 / 0.085, 1.7 / 1.4);
   const double q = table.survivalProbability(1e5 * 0.085e-4);
-  EXPECT_NEAR(tabulated.tabulatedAbsorption(2), 1.0 - q * q, 1e-9);
-  EXPECT_NEAR(tabulated.tabulatedAbsorption(3), 1.0 - q * q * q, 1e-9);
-  EXPECT_THROW(traced.tabulatedAbsorption(2), std::logic_error);
-  EXPECT_THROW(tabulated.tabulatedAbsorption(5), std::invalid_argument);
-  const double expected =
-      0.7 * tabulated.tabulatedAbsorption(2) + 0.3 * tabulated.tabulatedAbsorption(3);
+  const double expected = 1.0 - q * q * q;
+  EXPECT_NEAR(tabulated.tabulatedAbsorption(), expected, 1e-9);
+  EXPECT_THROW(traced.tabulatedAbsorption(), std::logic_error);
+  EXPECT_EQ(tabulated.melanosomesPerInteraction(), 3u);
+  EXPECT_EQ(traced.melanosomesPerInteraction(), 3u);
   Rng tracedRng(5), tabulatedRng(6);
   const int trials = 100000;
-  int tracedAbsorbed = 0, tabulatedAbsorbed = 0, metThree = 0;
+  int tracedAbsorbed = 0, tabulatedAbsorbed = 0;
+  std::uint64_t tracedMet = 0;
   for (int i = 0; i < trials; ++i) {
-    tracedAbsorbed += traced.interact(Vec3{0, 0, 1}, tracedRng).absorbed ? 1 : 0;
+    const MelanosomeEvent t = traced.interact(Vec3{0, 0, 1}, tracedRng);
+    ASSERT_TRUE(t.melanosomesMet >= 1 && t.melanosomesMet <= 3) << t.melanosomesMet;
+    ASSERT_TRUE(t.absorbed || t.melanosomesMet == 3);  // only absorption stops it early
+    tracedMet += t.melanosomesMet;
+    tracedAbsorbed += t.absorbed ? 1 : 0;
     const MelanosomeEvent event = tabulated.interact(Vec3{0, 0, 1}, tabulatedRng);
-    ASSERT_TRUE(event.melanosomesMet == 2 || event.melanosomesMet == 3) << event.melanosomesMet;
-    metThree += event.melanosomesMet == 3 ? 1 : 0;
+    ASSERT_EQ(event.melanosomesMet, 3u);
     tabulatedAbsorbed += event.absorbed ? 1 : 0;
     if (!event.absorbed) {
       ASSERT_NEAR(dot(event.direction, event.direction), 1.0, 1e-12);
@@ -279,13 +283,14 @@ TEST(MelanosomeLayerTabulated, InteractionsAbsorbLikeTracedOnes) {
   }
   const double pTraced = tracedAbsorbed / double(trials),
                pTabulated = tabulatedAbsorbed / double(trials);
-  const double sigmaMet = std::sqrt(0.3 * 0.7 / trials);  // ≈ 0.0014
-  EXPECT_NEAR(metThree / double(trials), 0.3, 4.0 * sigmaMet);
   const double sigma =
       std::sqrt(expected * (1 - expected) / trials);  // ≈ 0.0016; the table's own is smaller
   EXPECT_NEAR(pTabulated, expected, 4.0 * sigma);
   EXPECT_NEAR(pTraced, expected, 4.0 * std::sqrt(2.0) * sigma) << "table " << expected;
   EXPECT_GT(expected, 0.1);
+  // The traced interaction meets 1 + q + q² melanosomes on average (each survived with q;
+  // per trial at most 3, so σ of the mean ≤ 1/√trials ≈ 0.0032).
+  EXPECT_NEAR(tracedMet / double(trials), 1 + q + q * q, 0.01);
 }
 
 namespace {

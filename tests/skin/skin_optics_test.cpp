@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <optional>
+#include <tuple>
 
 #include "skin/layer_composition.h"
 #include "skin/melanosome_scattering_angle.h"
@@ -162,7 +163,7 @@ TEST(SkinOptics, MeanScatteringAngleFollowsWavelength) {
 
 TEST(MelanosomeOptics, LightComplexesHandValues) {
   // S1 basale: full axes 0.41 × 0.17 µm; complex diameter 2 × 0.41 = 0.82 µm, r_s = 4.1e-5 cm;
-  // μ = (3 / 4.1e-5 cm) · 0.01 / 4 = 182.927 cm⁻¹; m = 0.82 / 0.17 = 4.8235.
+  // μ = (3 / 4.1e-5 cm) · 0.01 / 4 = 182.927 cm⁻¹; 0.82 / 0.17 = 4.8235, so "at most m" is 4.
   const Specimen s = specimen("S1");
   const MelanosomeOptics basale = layerMelanosomeOptics(s, Layer::StratumBasale);
   EXPECT_TRUE(basale.inComplexes);
@@ -170,7 +171,7 @@ TEST(MelanosomeOptics, LightComplexesHandValues) {
   EXPECT_DOUBLE_EQ(basale.semiMajorAxisCm, 0.205e-4);
   EXPECT_DOUBLE_EQ(basale.complexRadiusCm, 4.1e-5);
   EXPECT_NEAR(basale.mu_perCm, 182.927, 1e-3);
-  EXPECT_NEAR(basale.melanosomesPerComplex, 4.8235, 1e-4);
+  EXPECT_EQ(basale.melanosomesPerComplex, 4u);
   // Spinosum and granulosum: axes at 50 % and 25 %, so μ doubles and quadruples; m unchanged.
   const MelanosomeOptics spinosum = layerMelanosomeOptics(s, Layer::StratumSpinosum);
   const MelanosomeOptics granulosum = layerMelanosomeOptics(s, Layer::StratumGranulosum);
@@ -178,7 +179,7 @@ TEST(MelanosomeOptics, LightComplexesHandValues) {
   EXPECT_DOUBLE_EQ(granulosum.semiMinorAxisCm, 0.02125e-4);
   EXPECT_NEAR(spinosum.mu_perCm, 365.854, 1e-3);
   EXPECT_NEAR(granulosum.mu_perCm, 731.707, 1e-3);
-  EXPECT_NEAR(granulosum.melanosomesPerComplex, 4.8235, 1e-4);
+  EXPECT_EQ(granulosum.melanosomesPerComplex, 4u);
   const MelanosomeOptics corneum = layerMelanosomeOptics(s, Layer::StratumCorneum);
   EXPECT_EQ(corneum.mu_perCm, 0.0);
   EXPECT_EQ(corneum.semiMajorAxisCm, 0.0);
@@ -190,7 +191,22 @@ TEST(MelanosomeOptics, ModerateComplexesHalveTheDiameter) {
   const MelanosomeOptics basale = layerMelanosomeOptics(s, Layer::StratumBasale);
   EXPECT_DOUBLE_EQ(basale.complexRadiusCm, 2.05e-5);
   EXPECT_NEAR(basale.mu_perCm, 365.854, 1e-3);
-  EXPECT_NEAR(basale.melanosomesPerComplex, 2.4118, 1e-4);  // 0.41 / 0.17
+  EXPECT_EQ(basale.melanosomesPerComplex, 2u);  // 0.41 / 0.17 = 2.41
+}
+
+TEST(MelanosomeOptics, ComplexCountIsTheWholePartOfTheRatio) {
+  // m counts melanosomes: a ratio that is whole on paper stays whole whatever its rounding in
+  // binary (0.51 / 0.17 and 0.3 / 0.1 are not exactly 3), and 2.99 gives 2.
+  Specimen s = specimen("S1");
+  s.arrangement = MelanosomeArrangement::ModerateComplexes;  // diameter = major axis
+  for (const auto& [majorUm, minorUm, count] :
+       {std::tuple{0.51, 0.17, 3u}, std::tuple{0.3, 0.1, 3u}, std::tuple{0.299, 0.1, 2u},
+        std::tuple{0.17, 0.17, 1u}}) {
+    s.melanosomeMajorAxisUm = majorUm;
+    s.melanosomeMinorAxisUm = minorUm;
+    EXPECT_EQ(layerMelanosomeOptics(s, Layer::StratumBasale).melanosomesPerComplex, count)
+        << majorUm << " / " << minorUm;
+  }
 }
 
 TEST(MelanosomeOptics, DispersedSpheroidsHandValues) {
@@ -201,7 +217,7 @@ TEST(MelanosomeOptics, DispersedSpheroidsHandValues) {
   const MelanosomeOptics basale = layerMelanosomeOptics(s, Layer::StratumBasale);
   EXPECT_FALSE(basale.inComplexes);
   EXPECT_EQ(basale.complexRadiusCm, 0.0);
-  EXPECT_EQ(basale.melanosomesPerComplex, 0.0);
+  EXPECT_EQ(basale.melanosomesPerComplex, 0u);
   EXPECT_NEAR(basale.mu_perCm, 4465.92, 0.01);
   EXPECT_NEAR(layerMelanosomeOptics(s, Layer::StratumGranulosum).mu_perCm, 4.0 * 4465.92, 0.04);
 }

@@ -86,7 +86,7 @@ TEST(SkinWalk, EnergyIsAccountedForWithEveryProcess) {
   SkinOptics optics = clearOptics(1.4);
   for (auto& layer : optics.layers) layer.muATotal_perCm = 20;
   auto& basale = optics.layers[index(Layer::StratumBasale)];
-  basale.melanosome = {0.085e-4, 0.205e-4, true, 0.41e-4, 4.8, 300.0};
+  basale.melanosome = {0.085e-4, 0.205e-4, true, 0.41e-4, 4, 300.0};
   optics.melanosomeInteriorMuA_perCm = 2000;
   optics.meanScatteringAngleRad = 5.0 * kPi / 180.0;
   optics.layers[index(Layer::PapillaryDermis)].muRayleigh_perCm = 2500;
