@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <stdexcept>
@@ -60,30 +61,35 @@ std::string panelQuantity(const Film& film, std::size_t band) {
 }
 
 PanelMean panelMean(const Film& film, std::size_t band, const std::vector<bool>* mask) {
-  const NoiseImage even = filmHalfNoiseImage(film, false), odd = filmHalfNoiseImage(film, true);
-  const std::size_t groups = even.groups.size();
+  const NoiseImage first = filmHalfNoiseImage(film, false), second = filmHalfNoiseImage(film, true);
+  const std::vector<double> share = filmSecondHalfShare(film);
+  const std::size_t groups = first.groups.size();
   const bool colour = isColourBand(film.desc().bands.at(band));
   // Band groups come first, in band order, then R, G, B of the colour band.
   auto valueOf = [&](const NoiseImage& image, std::size_t pixel) {
     const double* v = &image.values[pixel * groups];
     if (!colour) return v[band];
-    return 0.2126 * v[even.rgb[0]] + 0.7152 * v[even.rgb[1]] + 0.0722 * v[even.rgb[2]];
+    return 0.2126 * v[first.rgb[0]] + 0.7152 * v[first.rgb[1]] + 0.0722 * v[first.rgb[2]];
   };
   const auto& coverage = mask ? *mask : film.coverage();
   const std::size_t pixels = static_cast<std::size_t>(film.width()) * film.height();
   double sum = 0, variance = 0;
+  bool bothHalves = true;
   PanelMean result;
   for (std::size_t p = 0; p < pixels; ++p) {
     if (!coverage.empty() && !coverage[p]) continue;
-    const double a = valueOf(even, p), b = valueOf(odd, p);
-    sum += 0.5 * (a + b);
-    variance += 0.25 * (a - b) * (a - b);
+    const double a = valueOf(first, p), b = valueOf(second, p), q = share[p * groups + band];
+    sum += (1 - q) * a + q * b;
+    variance += q * (1 - q) * (a - b) * (a - b);
+    bothHalves = bothHalves && q > 0 && q < 1;
     ++result.pixels;
   }
   if (result.pixels == 0) return result;
   const double n = static_cast<double>(result.pixels);
   result.mean = sum / n;
-  result.standardError = std::sqrt(variance) / n;
+  // With a half empty (fewer samples than one block per half) the halves say nothing of the noise.
+  result.standardError =
+      bothHalves ? std::sqrt(variance) / n : std::numeric_limits<double>::quiet_NaN();
   return result;
 }
 

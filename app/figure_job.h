@@ -21,8 +21,9 @@ namespace hylios {
 /// The mean over the covered pixels of a band's radiance (the mean over its channels) or, for a
 /// colour band, of its luminance Y (linear sRGB, 1 for a white diffuser under a uniform D65
 /// environment of scale 1), with the standard error of that mean from the film's two halves
-/// (even and odd samples, independent): per pixel the mean is (a + b)/2 with variance (a − b)²/4,
-/// so SE = √(Σ (a − b)²/4) / N over the N covered pixels.
+/// (independent, pixel_sampler.h): per pixel the mean is (1 − q)·a + q·b with variance
+/// q(1 − q)(a − b)², q the second half's share of the samples (renderer/image/render_noise.h),
+/// so SE = √(Σ q(1 − q)(a − b)²) / N over the N covered pixels; NaN while a half is empty.
 struct PanelMean {
   double mean = 0;
   double standardError = 0;

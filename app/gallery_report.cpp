@@ -144,7 +144,8 @@ std::string galleryMarkdown(const std::vector<GalleryFigure>& figures, const Gal
       "from the camera: `camera_visible = false`, docs/scene-format.md). Visible panels are sRGB; "
       "their number is the luminance Y on the same scale. Each panel's mean is taken over the "
       "pixels whose centre ray meets the head; its standard error comes from the film's two "
-      "halves (even and odd samples, app/figure_job.h). Noise is the film's own estimate of the "
+      "halves (alternating blocks of four samples, app/figure_job.h). Noise is the film's own "
+      "estimate of the "
       "median per-pixel relative noise over the head (the worst of its groups: band, R, G, B, "
       "chromaticity; renderer/image/render_noise.h).\n";
   for (const GalleryFigure& f : figures) {

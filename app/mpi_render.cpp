@@ -13,15 +13,15 @@ namespace {
 /// The film's state summed over the ranks (every rank's sums of its own tiles) into `whole` on
 /// rank 0 (may be `film` itself; ignored on the other ranks).
 void sumFilmOnRoot(const Film& film, Film* whole) {
-  std::vector<double> sums = film.sums(), oddSums = film.oddSums();
-  std::vector<std::uint32_t> counts = film.counts(), oddCounts = film.oddCounts();
+  std::vector<double> sums = film.sums(), secondHalfSums = film.secondHalfSums();
+  std::vector<std::uint32_t> counts = film.counts(), secondHalfCounts = film.secondHalfCounts();
   sumToRoot(sums);
-  sumToRoot(oddSums);
+  sumToRoot(secondHalfSums);
   sumToRoot(counts);
-  sumToRoot(oddCounts);
+  sumToRoot(secondHalfCounts);
   if (MpiSession::isRoot())
-    whole->restoreState(std::move(sums), std::move(counts), std::move(oddSums),
-                        std::move(oddCounts), film.samplesPerPixelDone());
+    whole->restoreState(std::move(sums), std::move(counts), std::move(secondHalfSums),
+                        std::move(secondHalfCounts), film.samplesPerPixelDone());
 }
 
 template <class T>

@@ -49,8 +49,8 @@ Film::Film(const FilmDesc& desc) : desc_(desc), width_(desc.width), height_(desc
       static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * channels_.size();
   sums_.assign(slots, 0.0);
   counts_.assign(slots, 0);
-  oddSums_.assign(slots, 0.0);
-  oddCounts_.assign(slots, 0);
+  secondHalfSums_.assign(slots, 0.0);
+  secondHalfCounts_.assign(slots, 0);
 }
 
 std::size_t Film::sampleBand(double u) const {
@@ -77,12 +77,12 @@ std::size_t Film::sampleChannel(double u) const {
   return inBand[channel];
 }
 
-void Film::addSample(int x, int y, std::size_t channel, double radiance, bool odd) {
+void Film::addSample(int x, int y, std::size_t channel, double radiance, bool secondHalf) {
   requireInside("Film::addSample", x, y, channel, width_, height_, channels_.size());
-  accumulate(x, y, channel, radiance, odd);
+  accumulate(x, y, channel, radiance, secondHalf);
 }
 
-void Film::accumulate(int x, int y, std::size_t channel, double radiance, bool odd) {
+void Film::accumulate(int x, int y, std::size_t channel, double radiance, bool secondHalf) {
   if (!std::isfinite(radiance)) {
     throw std::invalid_argument("Film::addSample: non-finite radiance " + std::to_string(radiance) +
                                 " at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
@@ -91,20 +91,21 @@ void Film::accumulate(int x, int y, std::size_t channel, double radiance, bool o
   const std::size_t s = slot(x, y, channel);
   sums_[s] += radiance;
   counts_[s] += 1;
-  if (odd) {
-    oddSums_[s] += radiance;
-    oddCounts_[s] += 1;
+  if (secondHalf) {
+    secondHalfSums_[s] += radiance;
+    secondHalfCounts_[s] += 1;
   }
 }
 
-void Film::addBandSample(int x, int y, std::size_t band, const double* radiance, bool odd) {
+void Film::addBandSample(int x, int y, std::size_t band, const double* radiance, bool secondHalf) {
   if (!wholeBandSamples_)
     throw std::logic_error("Film::addBandSample on a film filled one channel per sample");
   const std::vector<std::size_t>& channels = bandChannels_.at(band);
   if (channels.empty()) return;
   // The band's channels exist: the pixel is checked once, not once per channel.
   requireInside("Film::addBandSample", x, y, channels.front(), width_, height_, channels_.size());
-  for (std::size_t i = 0; i < channels.size(); ++i) accumulate(x, y, channels[i], radiance[i], odd);
+  for (std::size_t i = 0; i < channels.size(); ++i)
+    accumulate(x, y, channels[i], radiance[i], secondHalf);
 }
 
 double Film::value(int x, int y, std::size_t channel) const {
@@ -114,15 +115,15 @@ double Film::value(int x, int y, std::size_t channel) const {
       [this](std::size_t s) { return counts_[s]; });
 }
 
-double Film::halfValue(int x, int y, std::size_t channel, bool odd) const {
+double Film::halfValue(int x, int y, std::size_t channel, bool secondHalf) const {
   requireInside("Film::halfValue", x, y, channel, width_, height_, channels_.size());
-  if (odd)
+  if (secondHalf)
     return meanOrInterpolated(
-        x, y, channel, [this](std::size_t s) { return oddSums_[s]; },
-        [this](std::size_t s) { return oddCounts_[s]; });
+        x, y, channel, [this](std::size_t s) { return secondHalfSums_[s]; },
+        [this](std::size_t s) { return secondHalfCounts_[s]; });
   return meanOrInterpolated(
-      x, y, channel, [this](std::size_t s) { return sums_[s] - oddSums_[s]; },
-      [this](std::size_t s) { return counts_[s] - oddCounts_[s]; });
+      x, y, channel, [this](std::size_t s) { return sums_[s] - secondHalfSums_[s]; },
+      [this](std::size_t s) { return counts_[s] - secondHalfCounts_[s]; });
 }
 
 void Film::setCoverage(std::vector<bool> coverage) {
@@ -156,15 +157,16 @@ double Film::meanOrInterpolated(int x, int y, std::size_t channel, const Sum& su
 }
 
 void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts,
-                        std::vector<double> oddSums, std::vector<std::uint32_t> oddCounts,
-                        int samplesPerPixelDone) {
+                        std::vector<double> secondHalfSums,
+                        std::vector<std::uint32_t> secondHalfCounts, int samplesPerPixelDone) {
   if (sums.size() != sums_.size() || counts.size() != counts_.size() ||
-      oddSums.size() != sums_.size() || oddCounts.size() != counts_.size()) {
-    throw std::invalid_argument(
-        "film state has " + std::to_string(sums.size()) + " sums and " +
-        std::to_string(counts.size()) + " counts; this " + std::to_string(width_) + "x" +
-        std::to_string(height_) + " film with " + std::to_string(channels_.size()) +
-        " channels needs " + std::to_string(sums_.size()) + " of each (and as many odd ones)");
+      secondHalfSums.size() != sums_.size() || secondHalfCounts.size() != counts_.size()) {
+    throw std::invalid_argument("film state has " + std::to_string(sums.size()) + " sums and " +
+                                std::to_string(counts.size()) + " counts; this " +
+                                std::to_string(width_) + "x" + std::to_string(height_) +
+                                " film with " + std::to_string(channels_.size()) +
+                                " channels needs " + std::to_string(sums_.size()) +
+                                " of each (and as many for the second half)");
   }
   if (samplesPerPixelDone < 0)
     throw std::invalid_argument("film state has a negative sample count");
@@ -175,9 +177,10 @@ void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> cou
       const std::uint32_t first = counts[pixel * channels + band.front()];
       for (std::size_t c : band) {
         const std::size_t s = pixel * channels + c;
-        if (!std::isfinite(sums[s]) || !std::isfinite(oddSums[s]) || oddCounts[s] > counts[s])
+        if (!std::isfinite(sums[s]) || !std::isfinite(secondHalfSums[s]) ||
+            secondHalfCounts[s] > counts[s])
           throw std::invalid_argument(
-              "film state has a non-finite sum or an odd count above the count at pixel " +
+              "film state has a non-finite sum or a second-half count above the count at pixel " +
               std::to_string(pixel) + ", channel " + std::to_string(c));
         if (wholeBandSamples_ && counts[s] != first)
           throw std::invalid_argument(
@@ -194,14 +197,19 @@ void Film::restoreState(std::vector<double> sums, std::vector<std::uint32_t> cou
   }
   sums_ = std::move(sums);
   counts_ = std::move(counts);
-  oddSums_ = std::move(oddSums);
-  oddCounts_ = std::move(oddCounts);
+  secondHalfSums_ = std::move(secondHalfSums);
+  secondHalfCounts_ = std::move(secondHalfCounts);
   samplesPerPixelDone_ = samplesPerPixelDone;
 }
 
 std::uint32_t Film::sampleCount(int x, int y, std::size_t channel) const {
   requireInside("Film::sampleCount", x, y, channel, width_, height_, channels_.size());
   return counts_[slot(x, y, channel)];
+}
+
+std::uint32_t Film::secondHalfSampleCount(int x, int y, std::size_t channel) const {
+  requireInside("Film::secondHalfSampleCount", x, y, channel, width_, height_, channels_.size());
+  return secondHalfCounts_[slot(x, y, channel)];
 }
 
 }  // namespace hylios

@@ -45,21 +45,25 @@ class Film {
   /// A band for uniform u in [0, 1) (every band equally likely).
   std::size_t sampleBand(double u) const;
 
-  /// One sample of one channel (per-wavelength paths). `odd`: the sample's index is odd (the two
+  /// One sample of one channel (per-wavelength paths). `secondHalf`: the sample belongs to the
+  /// second of the film's two halves (filmHalfOfSample, renderer/tracing/pixel_sampler.h; the two
   /// halves of the samples give the render's noise, renderer/image/render_noise.h).
-  void addSample(int x, int y, std::size_t channel, double radiance, bool odd = false);
+  void addSample(int x, int y, std::size_t channel, double radiance, bool secondHalf = false);
   /// One sample of every channel of `band` at once (a path carrying the band's wavelengths):
   /// radiance[i] for bandChannels(band)[i].
-  void addBandSample(int x, int y, std::size_t band, const double* radiance, bool odd = false);
+  void addBandSample(int x, int y, std::size_t band, const double* radiance,
+                     bool secondHalf = false);
   /// Mean radiance of a pixel's channel; for a channel without samples, interpolated from the
   /// band's sampled channels (see above); 0 while the pixel's band has no sample at all.
   double value(int x, int y, std::size_t channel) const;
-  /// The same from the even (odd = false) or odd samples alone.
-  double halfValue(int x, int y, std::size_t channel, bool odd) const;
+  /// The same from the first (secondHalf = false) or the second half's samples alone.
+  double halfValue(int x, int y, std::size_t channel, bool secondHalf) const;
   /// Pixels whose centre ray sees a shape that does not emit (set by the renderer; empty: unknown).
   const std::vector<bool>& coverage() const { return coverage_; }
   void setCoverage(std::vector<bool> coverage);
   std::uint32_t sampleCount(int x, int y, std::size_t channel) const;
+  /// The part of sampleCount() from the second half's samples.
+  std::uint32_t secondHalfSampleCount(int x, int y, std::size_t channel) const;
   /// Samples per pixel accumulated so far (recorded in EXR headers).
   int samplesPerPixelDone() const { return samplesPerPixelDone_; }
   void setSamplesPerPixelDone(int spp) { samplesPerPixelDone_ = spp; }
@@ -68,9 +72,9 @@ class Film {
   /// (y·width + x)·channels + channel): radiance sums and sample counts (render checkpoints).
   const std::vector<double>& sums() const { return sums_; }
   const std::vector<std::uint32_t>& counts() const { return counts_; }
-  /// The part of sums() and counts() from samples of odd index.
-  const std::vector<double>& oddSums() const { return oddSums_; }
-  const std::vector<std::uint32_t>& oddCounts() const { return oddCounts_; }
+  /// The part of sums() and counts() from the second half's samples.
+  const std::vector<double>& secondHalfSums() const { return secondHalfSums_; }
+  const std::vector<std::uint32_t>& secondHalfCounts() const { return secondHalfCounts_; }
   /// Replaces the accumulated state with a saved one (a render checkpoint's). Throws
   /// std::invalid_argument, saying what is wrong, unless the sizes fit this film, every sum is
   /// finite, and every pixel's counts add up to samplesPerPixelDone (each sample adds one count).
@@ -79,7 +83,7 @@ class Film {
   bool wholeBandSamples() const { return wholeBandSamples_; }
   void setWholeBandSamples(bool whole) { wholeBandSamples_ = whole; }
   void restoreState(std::vector<double> sums, std::vector<std::uint32_t> counts,
-                    std::vector<double> oddSums, std::vector<std::uint32_t> oddCounts,
+                    std::vector<double> secondHalfSums, std::vector<std::uint32_t> secondHalfCounts,
                     int samplesPerPixelDone);
 
  private:
@@ -88,7 +92,7 @@ class Film {
   double meanOrInterpolated(int x, int y, std::size_t channel, const Sum& sum,
                             const Count& count) const;
   /// Adds one sample to a checked pixel and channel; throws for a non-finite radiance.
-  void accumulate(int x, int y, std::size_t channel, double radiance, bool odd);
+  void accumulate(int x, int y, std::size_t channel, double radiance, bool secondHalf);
   std::size_t slot(int x, int y, std::size_t channel) const {
     return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
             static_cast<std::size_t>(x)) *
@@ -102,8 +106,8 @@ class Film {
   std::vector<std::size_t> positionInBand_;  ///< channel → its index in bandChannels_[band]
   std::vector<double> sums_;
   std::vector<std::uint32_t> counts_;
-  std::vector<double> oddSums_;
-  std::vector<std::uint32_t> oddCounts_;
+  std::vector<double> secondHalfSums_;
+  std::vector<std::uint32_t> secondHalfCounts_;
   std::vector<bool> coverage_;
   bool wholeBandSamples_ = false;
   int samplesPerPixelDone_ = 0;

@@ -51,11 +51,11 @@ std::vector<std::size_t> channelsOfBand(const Film& film, std::size_t band) {
 }
 
 /// Which samples a film value is taken from: all, or one half (the noise estimate).
-enum class FilmHalf { All, Even, Odd };
+enum class FilmHalf { All, First, Second };
 
 double filmValue(const Film& film, int x, int y, std::size_t c, FilmHalf half) {
   return half == FilmHalf::All ? film.value(x, y, c)
-                               : film.halfValue(x, y, c, half == FilmHalf::Odd);
+                               : film.halfValue(x, y, c, half == FilmHalf::Second);
 }
 
 /// Linear sRGB of a colour band at a pixel: XYZ = k·Σ L(λ_i)·cmf(λ_i)·Δλ, then the sRGB matrix.
@@ -288,7 +288,7 @@ double colourBandNormalisation(const BandDesc& band) {
   return 1.0 / whiteY;
 }
 
-NoiseImage filmHalfNoiseImage(const Film& film, bool odd) {
+NoiseImage filmHalfNoiseImage(const Film& film, bool secondHalf) {
   NoiseImage image;
   image.width = film.width();
   image.height = film.height();
@@ -308,7 +308,7 @@ NoiseImage filmHalfNoiseImage(const Film& film, bool odd) {
                  static_cast<int>(bands.size()) + 2};
   }
   const double normalisation = colour ? colourBandNormalisation(bands[colourBand]) : 0.0;
-  const FilmHalf half = odd ? FilmHalf::Odd : FilmHalf::Even;
+  const FilmHalf half = secondHalf ? FilmHalf::Second : FilmHalf::First;
   image.values.reserve(static_cast<std::size_t>(image.width) * image.height * image.groups.size());
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -322,12 +322,38 @@ NoiseImage filmHalfNoiseImage(const Film& film, bool odd) {
   return image;
 }
 
+std::vector<double> filmSecondHalfShare(const Film& film) {
+  const auto& bands = film.desc().bands;
+  std::size_t colourBand = bands.size();
+  for (std::size_t b = 0; b < bands.size() && colourBand == bands.size(); ++b)
+    if (isColourBand(bands[b])) colourBand = b;
+  std::vector<std::vector<std::size_t>> channels;
+  for (std::size_t b = 0; b < bands.size(); ++b) channels.push_back(channelsOfBand(film, b));
+  const std::size_t groups = bands.size() + (colourBand < bands.size() ? 3 : 0);
+  // Paths that carry a whole band give each of its channels the same counts: one channel says it.
+  if (film.wholeBandSamples())
+    for (auto& c : channels) c.resize(std::min<std::size_t>(c.size(), 1));
+  std::vector<double> share, ofBand(bands.size());
+  share.reserve(static_cast<std::size_t>(film.width()) * film.height() * groups);
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      for (std::size_t b = 0; b < bands.size(); ++b) {
+        double all = 0, second = 0;
+        for (const std::size_t c : channels[b]) {
+          all += film.sampleCount(x, y, c);
+          second += film.secondHalfSampleCount(x, y, c);
+        }
+        ofBand[b] = all > 0 ? second / all : 0.0;
+      }
+      share.insert(share.end(), ofBand.begin(), ofBand.end());
+      if (colourBand < bands.size()) share.insert(share.end(), 3, ofBand[colourBand]);
+    }
+  return share;
+}
+
 std::vector<GroupNoise> filmNoise(const Film& film) {
-  std::vector<GroupNoise> noise = measureNoise(filmHalfNoiseImage(film, false),
-                                               filmHalfNoiseImage(film, true), film.coverage());
-  for (GroupNoise& g : noise)
-    g.medianRelative /= std::sqrt(2.0);  // the mean of two independent halves
-  return noise;
+  return measureHalvesNoise(filmHalfNoiseImage(film, false), filmHalfNoiseImage(film, true),
+                            filmSecondHalfShare(film), film.coverage());
 }
 
 std::vector<fs::path> writeFilmOutputs(

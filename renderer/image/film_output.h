@@ -52,11 +52,15 @@ std::vector<std::filesystem::path> writeFilmOutputs(
     const Film& film, const std::filesystem::path& exrPath,
     const std::vector<std::pair<std::string, std::string>>& extraAttributes = {});
 
-/// The film from its even (odd = false) or odd samples alone, reduced to the groups of
-/// renderer/image/render_noise.h: each band's mean radiance, and R, G, B of a colour band.
-NoiseImage filmHalfNoiseImage(const Film& film, bool odd);
-/// The film's own noise estimate: the two halves compared, scaled to the whole film (÷ √2), over
-/// its coverage mask.
+/// The film from its first (secondHalf = false) or second half's samples alone, reduced to the
+/// groups of renderer/image/render_noise.h: each band's mean radiance, and R, G, B of a colour
+/// band.
+NoiseImage filmHalfNoiseImage(const Film& film, bool secondHalf);
+/// Per pixel and group of filmHalfNoiseImage, the second half's share q of the samples of the
+/// group's channels (a colour band's for R, G, B; 0 where there is none).
+std::vector<double> filmSecondHalfShare(const Film& film);
+/// The film's own noise estimate: the two halves compared and weighed by their shares
+/// (measureHalvesNoise: the noise of the whole film), over its coverage mask.
 std::vector<GroupNoise> filmNoise(const Film& film);
 
 /// Pastes PNG panels side by side in a grid with their labels under them (a contact sheet), under

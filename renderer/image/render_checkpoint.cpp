@@ -17,8 +17,10 @@ namespace fs = std::filesystem;
 
 constexpr char kMagic[] = "hylios render checkpoint\n";
 constexpr std::size_t kMagicSize = sizeof kMagic - 1;
-// 2: odd-sample sums and counts (the noise estimate); 3: the pixel sampler's name
-constexpr std::uint32_t kVersion = 3;
+// 2: odd-sample sums and counts (the noise estimate); 3: the pixel sampler's name; 4: the second
+// half is the odd blocks of four samples, not the odd samples (pixel_sampler.h), and sample s is
+// another point of its half's sequence, so a version-3 film cannot go on
+constexpr std::uint32_t kVersion = 4;
 
 /// Appends little-endian values to a byte buffer.
 class ByteWriter {
@@ -173,8 +175,8 @@ void writeRenderCheckpoint(const fs::path& path, const RenderIdentity& identity,
   out.data().reserve(out.data().size() + film.sums().size() * 24 + 8);
   for (const double sum : film.sums()) out.f64(sum);
   for (const std::uint32_t count : film.counts()) out.u32(count);
-  for (const double sum : film.oddSums()) out.f64(sum);
-  for (const std::uint32_t count : film.oddCounts()) out.u32(count);
+  for (const double sum : film.secondHalfSums()) out.f64(sum);
+  for (const std::uint32_t count : film.secondHalfCounts()) out.u32(count);
   out.u64(skin::fnv1a64(out.data().data(), out.data().size()));
   writeAtomically(path, [&](const fs::path& tmp) {
     std::ofstream file(tmp, std::ios::binary);
@@ -238,8 +240,8 @@ RenderCheckpoint readRenderCheckpoint(const fs::path& path) {
   };
   readSums(checkpoint.sums);
   readCounts(checkpoint.counts);
-  readSums(checkpoint.oddSums);
-  readCounts(checkpoint.oddCounts);
+  readSums(checkpoint.secondHalfSums);
+  readCounts(checkpoint.secondHalfCounts);
   return checkpoint;
 }
 

@@ -10,7 +10,8 @@
 //              u64 n + n bytes the pixel sampler's name (version 3)
 //   state      u32 spp done; u64 slot count S (= width·height·C) + S × f64 radiance sums
 //              + S × u32 sample counts (Film::sums()/counts() order), then the same for the
-//              odd-index samples alone (Film::oddSums()/oddCounts(); version 2)
+//              second half's samples alone (Film::secondHalfSums()/secondHalfCounts(); version
+//              2; version 4: the half of pixel_sampler.h's inSecondFilmHalf)
 //   checksum   u64 FNV-1a 64 (skin/core/content_hash.h) of every byte before it
 // The state is the film's own (double sums and counts), not the EXR's float means, so the sums
 // continue bit-identically.
@@ -54,8 +55,8 @@ struct RenderCheckpoint {
   int samplesPerPixelDone = 0;
   std::vector<double> sums;
   std::vector<std::uint32_t> counts;
-  std::vector<double> oddSums;
-  std::vector<std::uint32_t> oddCounts;
+  std::vector<double> secondHalfSums;
+  std::vector<std::uint32_t> secondHalfCounts;
 };
 
 /// "<exrPath>.hylios-state".

@@ -25,8 +25,13 @@ bool seen(const std::vector<bool>& mask, std::size_t pixel) { return mask.empty(
 
 }  // namespace
 
-std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b,
-                                     const std::vector<bool>& mask) {
+namespace {
+/// The figures of both measures: per pixel p and group g, the estimates are weighed by
+/// share(p, g) = q (the second's), σ = scale·√(q(1 − q))·|a − b|; q ∉ (0, 1): no figure.
+template <class Share>
+std::vector<GroupNoise> groupNoise(const NoiseImage& a, const NoiseImage& b,
+                                   const std::vector<bool>& mask, const Share& share,
+                                   double scale) {
   if (a.width != b.width || a.height != b.height || a.groups != b.groups ||
       a.values.size() != b.values.size())
     throw std::invalid_argument("noise: the two images differ in size or channels");
@@ -41,9 +46,11 @@ std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b,
   for (std::size_t g = 0; g < groups; ++g) {
     relative.clear();
     for (std::size_t p = 0; p < pixels; ++p) {
+      const double q = share(p, g);
+      if (!seen(mask, p) || !(q > 0 && q < 1)) continue;
       const double x = a.values[p * groups + g], y = b.values[p * groups + g];
-      const double mean = 0.5 * (x + y);
-      if (seen(mask, p) && mean > 0) relative.push_back(std::fabs(x - y) / std::sqrt(2.0) / mean);
+      const double mean = (1 - q) * x + q * y;
+      if (mean > 0) relative.push_back(scale * std::sqrt(q * (1 - q)) * std::fabs(x - y) / mean);
     }
     result.push_back({a.groups[g], median(relative), relative.size()});
   }
@@ -51,6 +58,8 @@ std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b,
   if (colour) {
     relative.clear();
     for (std::size_t p = 0; p < pixels; ++p) {
+      const double q = share(p, static_cast<std::size_t>(a.rgb[0]));
+      if (!seen(mask, p) || !(q > 0 && q < 1)) continue;
       std::array<double, 3> ca{}, cb{};
       double sa = 0, sb = 0;
       for (int i = 0; i < 3; ++i) {
@@ -59,18 +68,38 @@ std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b,
         sa += ca[i];
         sb += cb[i];
       }
-      if (!seen(mask, p) || !(sa > 0) || !(sb > 0)) continue;
+      if (!(sa > 0) || !(sb > 0)) continue;
       double difference = 0, norm = 0;
       for (int i = 0; i < 3; ++i) {
-        const double u = ca[i] / sa, v = cb[i] / sb;
+        const double u = ca[i] / sa, v = cb[i] / sb, mean = (1 - q) * u + q * v;
         difference += (u - v) * (u - v);
-        norm += 0.25 * (u + v) * (u + v);
+        norm += mean * mean;
       }
-      if (norm > 0) relative.push_back(std::sqrt(difference) / std::sqrt(2.0) / std::sqrt(norm));
+      if (norm > 0)
+        relative.push_back(scale * std::sqrt(q * (1 - q)) * std::sqrt(difference / norm));
     }
     result.push_back({"chromaticity", median(relative), relative.size()});
   }
   return result;
+}
+}  // namespace
+
+std::vector<GroupNoise> measureNoise(const NoiseImage& a, const NoiseImage& b,
+                                     const std::vector<bool>& mask) {
+  // Two renders, equal weights: √(½·½)·|a − b|·√2 = |a − b|/√2, the noise of one render.
+  return groupNoise(
+      a, b, mask, [](std::size_t, std::size_t) { return 0.5; }, std::sqrt(2.0));
+}
+
+std::vector<GroupNoise> measureHalvesNoise(const NoiseImage& first, const NoiseImage& second,
+                                           const std::vector<double>& secondShare,
+                                           const std::vector<bool>& mask) {
+  if (secondShare.size() != first.values.size())
+    throw std::invalid_argument("noise: the halves' shares do not match the image");
+  const std::size_t groups = first.groups.size();
+  return groupNoise(
+      first, second, mask,
+      [&](std::size_t p, std::size_t g) { return secondShare[p * groups + g]; }, 1.0);
 }
 
 double worstNoise(const std::vector<GroupNoise>& noise) {

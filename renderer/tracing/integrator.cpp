@@ -610,20 +610,20 @@ bool Integrator::renderPass(Film& film, int firstSample, int endSample,
                 const double u = c.band;
                 const Ray cameraRay =
                     camera_->generateRay(x + c.filmX, y + c.filmY, c.lensU, c.lensV);
-                const bool odd = (s & 1) != 0;
+                const bool secondHalf = inSecondFilmHalf(static_cast<std::uint64_t>(s));
                 if (spectral_) {  // the path carries every channel of a band
                   const std::size_t band = film.sampleBand(u);
                   const std::vector<std::size_t>& channels = film.bandChannels(band);
                   values.resize(channels.size());
                   radiance(cameraRay, PathSpectrum{channels.data(), channels.size(), band, true},
                            samples, stats, values.data());
-                  film.addBandSample(x, y, band, values.data(), odd);
+                  film.addBandSample(x, y, band, values.data(), secondHalf);
                 } else {
                   const std::size_t channel = film.sampleChannel(u);
                   const std::size_t channels[1] = {channel};
                   double value = 0;
                   radiance(cameraRay, PathSpectrum{channels, 1, 0, false}, samples, stats, &value);
-                  film.addSample(x, y, channel, value, odd);
+                  film.addSample(x, y, channel, value, secondHalf);
                 }
               }
             }

@@ -113,12 +113,11 @@ struct RenderOptions {
   RenderDivision division;
 };
 constexpr int kMinNoiseSamples = 8;
-/// Noise checks after the first fall on multiples of 4 samples per pixel: each of the film's two
-/// halves then holds an even number of a sobol sequence's points, and those come in pairs that
-/// fall in opposite halves of every dimension (pixel_sampler.h). An odd count leaves one point
-/// unpaired, and that one point's error is not balanced: at 512², Figure 1's 1100 nm band
-/// measured 7.0 % noise at 14 spp against 5.9 % at 12, and 6.0 % at 18 against 5.2 % at 16
-/// (docs/benchmarks.md). It is also the least step, so that a render ends in few passes.
+/// Noise checks after the first fall on multiples of 4 samples per pixel (kFilmHalfBlock): each
+/// of the film's two halves then holds whole blocks of 4 points of its sobol sequence, each block
+/// a net (pixel_sampler.h). A count between leaves a half with points that are not balanced: at
+/// 512², Figure 1's 1100 nm band measured 7.0 % noise at 14 spp against 5.9 % at 12 (session 15,
+/// docs/benchmarks.md). It is also the least step, so that a render ends in few passes.
 constexpr int kNoiseCheckGranule = 4;
 constexpr double kAdaptivePassSeconds = 2.0;
 

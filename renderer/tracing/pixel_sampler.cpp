@@ -149,12 +149,11 @@ SampleStream PixelSampler::stream(std::uint64_t pixel, std::uint64_t sample, ski
   if (sample >> 33 != 0)
     throw std::invalid_argument("PixelSampler: sample index " + std::to_string(sample) +
                                 " is beyond the sobol sampler's 2^33 per pixel");
-  // Even and odd samples: two independently scrambled sequences (the film's halves, see the
-  // header).
-  const std::uint64_t half = sample & 1u;
+  // The film's halves: two independently scrambled sequences, in alternating blocks (header).
+  const std::uint64_t half = inSecondFilmHalf(sample) ? 1 : 0;
   const std::uint64_t scrambleSeed =
       skin::mix64(skin::mix64(seed_ ^ kSobolSalt) ^ skin::mix64(2 * pixel + half));
-  return SampleStream(rng, scrambleSeed, static_cast<std::uint32_t>(sample >> 1));
+  return SampleStream(rng, scrambleSeed, static_cast<std::uint32_t>(filmHalfPoint(sample)));
 }
 
 CameraSample PixelSampler::cameraSample(std::uint64_t pixel, std::uint64_t sample,

@@ -17,12 +17,18 @@
 //   (0,m,2)-net) and of each coordinate; the seeds are hashes of (seed, pixel, half, dimension).
 //   Dimensions after the cap come from the sample's Rng.
 //
-// The film's two halves (even and odd samples, renderer/image/render_noise.h) stay independent
-// estimates: sample s of a pixel is point s/2 of one of two independently scrambled sequences,
-// chosen by the parity of s. Each half is then a randomised quasi-Monte Carlo estimate of its own,
-// |even − odd|/√2 is an unbiased noise figure of one half and the noise of the whole is that / √2,
-// as with independent samples. (Points 2k and 2k+1 of one Sobol' sequence would be anticorrelated —
-// they fall in opposite halves of the pixel in x and in y — and the half-split would overstate the
+// The film's two halves (renderer/image/render_noise.h) stay independent estimates, drawn from
+// two independently scrambled sequences: from sample 8 on the samples of a pixel come in blocks
+// of 4 that alternate between them (samples 8–11, 16–19, … are points 4–7, 8–11, … of the first;
+// 12–15, 20–23, … those of the second); samples 0–7 give points 0–3 of each, the first two
+// alternating (0, 2 and 1, 3), so that a render of 2 samples already has both halves. Each half is
+// a randomised quasi-Monte Carlo estimate of its own, so the halves' difference is an unbiased
+// noise figure (render_noise.h weighs unequal halves). At any multiple of 4 samples from 8 on,
+// each half holds whole aligned blocks of 4 points of a (0,2)-sequence, every one a (0,2,2)-net:
+// at 12 spp 8 points and 4, where alternating single samples (even and odd) left each half 6
+// points, a net of 4 and 2 stragglers that barely helped (docs/benchmarks.md, session 18).
+// (Consecutive points of one Sobol' sequence are anticorrelated — points 2k and 2k+1 fall in
+// opposite halves of the pixel in x and in y — so a split within one sequence would overstate the
 // noise by the difference between the pixel's halves.)
 //
 // Deterministic: a sample's numbers depend only on (seed, pixel, sample), never on the thread or
@@ -57,6 +63,20 @@ std::array<std::uint32_t, 2> scrambledSobol2D(std::uint32_t reversedIndex,
                                               std::uint32_t shuffleSeed, std::uint32_t seedX,
                                               std::uint32_t seedY);
 }  // namespace sobol
+
+/// The film's halves (above): whether sample s of a pixel belongs to the second half, and which
+/// point of its half's sequence it is.
+constexpr std::uint64_t kFilmHalfBlock = 4;
+constexpr bool inSecondFilmHalf(std::uint64_t sample) {
+  if (sample < 4) return sample % 2 == 1;
+  if (sample < 8) return sample >= 6;
+  return sample / kFilmHalfBlock % 2 == 1;
+}
+constexpr std::uint64_t filmHalfPoint(std::uint64_t sample) {
+  if (sample < 4) return sample / 2;
+  if (sample < 8) return 2 + sample % 2;
+  return sample / (2 * kFilmHalfBlock) * kFilmHalfBlock + sample % kFilmHalfBlock;
+}
 
 /// Low-discrepancy dimensions per camera path (sobol): the camera sample (5), at the first skin hit
 /// a table-mode exit's draw (2) and the entry's first facet (3), and the light sample and bounce of

@@ -73,7 +73,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderSettings& settings,
   if (settings.resumeFrom) {
     const RenderCheckpoint& saved = *settings.resumeFrom;
     result.film->setWholeBandSamples(integrator.estimator() == skin::Estimator::Spectral);
-    result.film->restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts,
+    result.film->restoreState(saved.sums, saved.counts, saved.secondHalfSums, saved.secondHalfCounts,
                               saved.samplesPerPixelDone);
     result.samplesPerPixelAtStart = saved.samplesPerPixelDone;
     if (log)

@@ -9,7 +9,7 @@
 
 namespace hylios {
 
-/// Bytes per pixel and film channel: the film's sums and counts (all samples and the odd half),
+/// Bytes per pixel and film channel: the film's sums and counts (all samples and the second half),
 /// the float image written to the EXR, the checkpoint's copy, with some slack.
 constexpr std::uint64_t kRenderBytesPerPixelChannel = 48;
 /// Bytes per pixel besides the channels: RGB and alpha of the EXR, the previews, the coverage.

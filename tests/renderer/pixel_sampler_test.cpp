@@ -7,6 +7,7 @@
 // for any pass size.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <set>
@@ -178,11 +179,20 @@ TEST(Sobol, FastRequestsEqualTheCompositionOfScrambleShuffleAndDimension) {
 TEST(PixelSampler, EachHalfOfAPixelsSamplesIsStratifiedInEveryRequestAtEveryPowerOfTwo) {
   const PixelSampler sampler(SamplerKind::Sobol, 11, 1);
   constexpr int kLog2 = 10;
+  // Every sample is one point of one half, and the first 2^k samples of each half are points
+  // 0 … 2^k − 1 of it (the halves' own numbering, pixel_sampler.h).
+  std::array<std::vector<std::uint64_t>, 2> samplesOfHalf;
+  for (std::uint64_t sample = 0; sample < (2u << kLog2); ++sample) {
+    auto& half = samplesOfHalf[inSecondFilmHalf(sample) ? 1 : 0];
+    ASSERT_EQ(filmHalfPoint(sample), half.size()) << "sample " << sample;
+    half.push_back(sample);
+  }
+  ASSERT_EQ(samplesOfHalf[0].size(), samplesOfHalf[1].size());
   for (const std::uint64_t pixel : {0ull, 12345ull})
     for (std::uint64_t half = 0; half < 2; ++half) {
       std::vector<PathNumbers> paths;
-      for (std::uint64_t k = 0; k < (1u << kLog2); ++k)
-        paths.push_back(drawPath(sampler, pixel, 2 * k + half, 11));
+      for (const std::uint64_t sample : samplesOfHalf[half])
+        paths.push_back(drawPath(sampler, pixel, sample, 11));
       for (int m = 0; m <= kLog2; ++m) {
         const std::size_t n = std::size_t{1} << m;
         for (std::size_t r = 0; r < paths[0].twoD.size(); ++r) {
@@ -201,27 +211,48 @@ TEST(PixelSampler, EachHalfOfAPixelsSamplesIsStratifiedInEveryRequestAtEveryPowe
     }
 }
 
+TEST(PixelSampler, FilmHalvesHoldWholeBlocksOfFourAtEveryMultipleOfFour) {
+  // From 8 samples on, at every multiple of 4 each half holds a multiple of 4 points (aligned
+  // blocks of its sequence: nets), 12 giving 8 and 4; from 2 samples on neither half is empty.
+  std::array<std::uint64_t, 2> points{0, 0};
+  for (std::uint64_t done = 1; done <= 64; ++done) {
+    ++points[inSecondFilmHalf(done - 1) ? 1 : 0];
+    if (done >= 2) {
+      EXPECT_TRUE(points[0] > 0 && points[1] > 0) << done;
+    }
+    if (done >= 8 && done % 4 == 0) {
+      EXPECT_TRUE(points[0] % 4 == 0 && points[1] % 4 == 0) << done;
+    }
+    if (done == 12) {
+      EXPECT_TRUE(points[0] == 8 && points[1] == 4);
+    }
+    if (done % 8 == 0) {
+      EXPECT_EQ(points[0], points[1]) << done;
+    }
+  }
+}
+
 TEST(PixelSampler, PixelsHalvesSeedsAndRequestsAreScrambledIndependently) {
   const PixelSampler sampler(SamplerKind::Sobol, 5, 1), other(SamplerKind::Sobol, 6, 1);
   constexpr int kBins = 8;
   // Across 20000 pixels, sample 0: uniform marginals (64 bins, χ² at 1 %), and no dependence
   // between neighbouring pixels, between the pixel's two halves, between seeds, or between the
   // film and light requests of one path (8 × 8 tables, 49 dof).
-  std::vector<double> film, nextPixel, oddHalf, otherSeed, light, band;
+  std::vector<double> film, nextPixel, secondHalf, otherSeed, light, band;
   for (std::uint64_t p = 0; p < 20000; ++p) {
     const PathNumbers a = drawPath(sampler, p, 0, 5);
     film.push_back(a.twoD[0][0]);
     light.push_back(a.twoD[2][0]);
     band.push_back(a.oneD[0]);
     nextPixel.push_back(drawPath(sampler, p + 1, 0, 5).twoD[0][0]);
-    oddHalf.push_back(drawPath(sampler, p, 1, 5).twoD[0][0]);
+    secondHalf.push_back(drawPath(sampler, p, 1, 5).twoD[0][0]);  // the second half's point 0
     otherSeed.push_back(drawPath(other, p, 0, 6).twoD[0][0]);
   }
   for (const auto* values : {&film, &light, &band})
     EXPECT_TRUE(test::chi2Accepts(test::chi2Test1D(
         *values, [](double) { return 1.0; }, test::uniformEdges(0, 1, 64))));
   EXPECT_GT(independencePValue(jointHistogram(film, nextPixel, kBins)), 0.01);
-  EXPECT_GT(independencePValue(jointHistogram(film, oddHalf, kBins)), 0.01);
+  EXPECT_GT(independencePValue(jointHistogram(film, secondHalf, kBins)), 0.01);
   EXPECT_GT(independencePValue(jointHistogram(film, otherSeed, kBins)), 0.01);
   EXPECT_GT(independencePValue(jointHistogram(film, light, kBins)), 0.01);
   // Within one pixel's 4096 samples of one half: each request is stratified, so the margins are
@@ -368,7 +399,7 @@ TEST(PixelSampler, SobolRenderIsTheSameAtOneAndTwoThreadsAndAnyPassSize) {
     two = renderFurnace(SamplerKind::Sobol, 12, 3, 0);
   }
   EXPECT_EQ(one.sums(), two.sums());
-  EXPECT_EQ(one.oddSums(), two.oddSums());
+  EXPECT_EQ(one.secondHalfSums(), two.secondHalfSums());
   // and differs from the independent sampler's image (the setting is used)
   EXPECT_NE(one.sums(), renderFurnace(SamplerKind::Independent, 12, 3).sums());
 }

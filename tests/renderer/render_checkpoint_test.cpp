@@ -51,8 +51,8 @@ Film render(int threads, int samplesPerPass, int stopAfterPasses = -1, Film* res
   Film film(testScene().film);
   film.setWholeBandSamples(integrator().estimator() == hylios::skin::Estimator::Spectral);
   if (resumeFrom)
-    film.restoreState(resumeFrom->sums(), resumeFrom->counts(), resumeFrom->oddSums(),
-                      resumeFrom->oddCounts(), resumeFrom->samplesPerPixelDone());
+    film.restoreState(resumeFrom->sums(), resumeFrom->counts(), resumeFrom->secondHalfSums(),
+                      resumeFrom->secondHalfCounts(), resumeFrom->samplesPerPixelDone());
   RenderOptions options;
   options.samplesPerPass = samplesPerPass;
   int passes = 0;
@@ -155,7 +155,7 @@ TEST(RenderCheckpoint, StoppedRenderContinuedFromItsCheckpointEqualsUninterrupte
     EXPECT_EQ(saved.samplesPerPixelDone, 6);
     Film restored(testScene().film);
     restored.setWholeBandSamples(reference().wholeBandSamples());
-    restored.restoreState(saved.sums, saved.counts, saved.oddSums, saved.oddCounts,
+    restored.restoreState(saved.sums, saved.counts, saved.secondHalfSums, saved.secondHalfCounts,
                           saved.samplesPerPixelDone);
     const Film continued = render(3 - threads, 0, -1, &restored);
     expectSameFilm(continued, reference());
@@ -259,22 +259,22 @@ TEST(FilmRestoreState, RejectsStateThatDoesNotFit) {
   film.setWholeBandSamples(whole.wholeBandSamples());
   std::vector<std::uint32_t> counts = whole.counts();
   EXPECT_THROW(
-      film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp - 1),
+      film.restoreState(whole.sums(), counts, whole.secondHalfSums(), whole.secondHalfCounts(), kSpp - 1),
       std::invalid_argument);  // counts add up to 12
   counts[5] += 1;
-  EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.oddSums(), whole.oddCounts(), kSpp),
+  EXPECT_THROW(film.restoreState(whole.sums(), counts, whole.secondHalfSums(), whole.secondHalfCounts(), kSpp),
                std::invalid_argument);
   std::vector<double> sums = whole.sums();
   sums[3] = std::nan("");
-  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp),
+  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.secondHalfSums(), whole.secondHalfCounts(), kSpp),
                std::invalid_argument);
   sums.pop_back();
-  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp),
+  EXPECT_THROW(film.restoreState(sums, whole.counts(), whole.secondHalfSums(), whole.secondHalfCounts(), kSpp),
                std::invalid_argument);
-  std::vector<std::uint32_t> odd = whole.oddCounts();
+  std::vector<std::uint32_t> odd = whole.secondHalfCounts();
   odd[7] = whole.counts()[7] + 1;  // more odd samples than samples
-  EXPECT_THROW(film.restoreState(whole.sums(), whole.counts(), whole.oddSums(), odd, kSpp),
+  EXPECT_THROW(film.restoreState(whole.sums(), whole.counts(), whole.secondHalfSums(), odd, kSpp),
                std::invalid_argument);
-  film.restoreState(whole.sums(), whole.counts(), whole.oddSums(), whole.oddCounts(), kSpp);
+  film.restoreState(whole.sums(), whole.counts(), whole.secondHalfSums(), whole.secondHalfCounts(), kSpp);
   expectSameFilm(film, whole);
 }

@@ -28,8 +28,8 @@ SceneDesc testScene() {
 /// The films of `parts` parts, added slot by slot into a film of the scene.
 Film summedParts(const SceneDesc& scene, const Integrator& integrator, std::size_t parts,
                  RenderStats& stats) {
-  std::vector<double> sums, oddSums;
-  std::vector<std::uint32_t> counts, oddCounts;
+  std::vector<double> sums, secondHalfSums;
+  std::vector<std::uint32_t> counts, secondHalfCounts;
   int spp = 0;
   for (std::size_t part = 0; part < parts; ++part) {
     Film film(scene.film);
@@ -40,21 +40,21 @@ Film summedParts(const SceneDesc& scene, const Integrator& integrator, std::size
     stats.add(integrator.render(film, options));
     if (part == 0) {
       sums.assign(film.sums().size(), 0.0);
-      oddSums = sums;
+      secondHalfSums = sums;
       counts.assign(film.counts().size(), 0);
-      oddCounts = counts;
+      secondHalfCounts = counts;
     }
     for (std::size_t s = 0; s < sums.size(); ++s) {
       sums[s] += film.sums()[s];
-      oddSums[s] += film.oddSums()[s];
+      secondHalfSums[s] += film.secondHalfSums()[s];
       counts[s] += film.counts()[s];
-      oddCounts[s] += film.oddCounts()[s];
+      secondHalfCounts[s] += film.secondHalfCounts()[s];
     }
     spp = film.samplesPerPixelDone();
   }
   Film whole(scene.film);
   whole.setWholeBandSamples(integrator.estimator() == skin::Estimator::Spectral);
-  whole.restoreState(sums, counts, oddSums, oddCounts, spp);
+  whole.restoreState(sums, counts, secondHalfSums, secondHalfCounts, spp);
   return whole;
 }
 
@@ -69,9 +69,9 @@ TEST(RenderDivision, PartsAddUpToTheUndividedFilmBitForBit) {
     RenderStats stats;
     const Film summed = summedParts(scene, integrator, parts, stats);
     EXPECT_EQ(summed.sums(), reference.sums()) << parts << " parts";
-    EXPECT_EQ(summed.oddSums(), reference.oddSums()) << parts << " parts";
+    EXPECT_EQ(summed.secondHalfSums(), reference.secondHalfSums()) << parts << " parts";
     EXPECT_EQ(summed.counts(), reference.counts()) << parts << " parts";
-    EXPECT_EQ(summed.oddCounts(), reference.oddCounts()) << parts << " parts";
+    EXPECT_EQ(summed.secondHalfCounts(), reference.secondHalfCounts()) << parts << " parts";
     EXPECT_EQ(stats.paths, whole.paths) << parts << " parts";
     EXPECT_EQ(stats.skinWalks, whole.skinWalks) << parts << " parts";
   }

@@ -290,7 +290,7 @@ TEST(MelanosomeLayerTabulated, InteractionsAbsorbLikeTracedOnes) {
   EXPECT_GT(expected, 0.1);
   // The traced interaction meets 1 + q + q² melanosomes on average (each survived with q;
   // per trial at most 3, so σ of the mean ≤ 1/√trials ≈ 0.0032).
-  EXPECT_NEAR(tracedMet / double(trials), 1 + q + q * q, 0.01);
+  EXPECT_NEAR(static_cast<double>(tracedMet) / trials, 1 + q + q * q, 0.01);
 }
 
 namespace {
