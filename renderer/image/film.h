@@ -46,7 +46,7 @@ class Film {
   std::size_t sampleBand(double u) const;
 
   /// One sample of one channel (per-wavelength paths). `secondHalf`: the sample belongs to the
-  /// second of the film's two halves (filmHalfOfSample, renderer/tracing/pixel_sampler.h; the two
+  /// second of the film's two halves (inSecondFilmHalf, renderer/tracing/pixel_sampler.h; the two
   /// halves of the samples give the render's noise, renderer/image/render_noise.h).
   void addSample(int x, int y, std::size_t channel, double radiance, bool secondHalf = false);
   /// One sample of every channel of `band` at once (a path carrying the band's wavelengths):

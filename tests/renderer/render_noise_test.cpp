@@ -35,6 +35,23 @@ TEST(RenderNoise, RelativeNoiseIsTheMedianOfHalfDifferencesOverTheMean) {
   EXPECT_NEAR(worstNoise(noise), noise[0].medianRelative, 0);
 }
 
+TEST(RenderNoise, UnequalHalvesAreWeighedByTheirShares) {
+  // A film's halves a = 1, b = 4 with the second holding q = 1/3 of the samples: the film's value
+  // is (2/3)·1 + (1/3)·4 = 2 and σ = √(q(1 − q))·|a − b| = √(2/9)·3 = √2, relative 0.7071. Equal
+  // halves (q = 1/2) give |a − b|/2 over the mean: 1.5 / 2.5 = 0.6, measureNoise's figure / √2.
+  // A pixel with an empty half (q = 0) has no figure.
+  const NoiseImage a = image(3, 1, {"band x"}, {1, 1, 1});
+  const NoiseImage b = image(3, 1, {"band x"}, {4, 4, 4});
+  const auto unequal = measureHalvesNoise(a, b, {1.0 / 3, 1.0 / 3, 0.0}, {});
+  EXPECT_EQ(unequal[0].pixels, 2u);
+  EXPECT_NEAR(unequal[0].medianRelative, std::sqrt(2.0) / 2, 1e-15);
+  const auto equal = measureHalvesNoise(a, b, {0.5, 0.5, 0.5}, {});
+  EXPECT_NEAR(equal[0].medianRelative, 0.6, 1e-15);
+  EXPECT_NEAR(equal[0].medianRelative * std::sqrt(2.0), measureNoise(a, b, {})[0].medianRelative,
+              1e-15);
+  EXPECT_THROW(measureHalvesNoise(a, b, {0.5}, {}), std::invalid_argument);
+}
+
 TEST(RenderNoise, ChromaticityNoiseIgnoresBrightnessAndSeesHue) {
   // Same hue at twice the brightness: no chromaticity noise; a hue shift (1,1,1) vs (2,1,1):
   // c = (1/3, 1/3, 1/3) and (1/2, 1/4, 1/4), ‖Δc‖ = 0.2041, ‖mean c‖ = 0.5951 → 0.2425.
