@@ -44,6 +44,7 @@ AbsorberConcentrations layerAbsorberConcentrations(const Specimen& s, Layer laye
     c[index(Absorber::BetaCarotene)] = f.stratumCorneumBetaCarotene_mgPerMl;
     c[index(Absorber::Dna)] = f.dna_mgPerMl;
   } else if (isPigmentedEpidermis(layer)) {
+    c[index(Absorber::Keratin)] = f.epidermisKeratinFraction;
     c[index(Absorber::BetaCarotene)] = f.epidermisBetaCarotene_mgPerMl;
     c[index(Absorber::Dna)] = f.dna_mgPerMl;
     // Colloidal melanin: the fraction of the layer's volume holding melanin at the melanosome

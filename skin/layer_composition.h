@@ -11,9 +11,11 @@
 //
 // Per layer (the paper's Table 2; choices in docs/interpretations.md):
 //   stratum corneum       keratin, water, lipid, urocanic acid, β-carotene (SC), DNA
-//   granulosum/spinosum/  water, lipid, β-carotene (epidermis), DNA, colloidal melanin:
-//   basale                  eumelanin = f_colloidal · c_eu, pheomelanin = f_colloidal · c_pheo
-//                           (c = the melanosome concentrations of Table 1; docs/interpretations.md)
+//   granulosum/spinosum/  water, lipid, keratin (not in Table 2: the living cells' protein;
+//   basale                  docs/interpretations.md), β-carotene (epidermis), DNA, colloidal
+//                           melanin: eumelanin = f_colloidal · c_eu, pheomelanin = f_colloidal ·
+//                           c_pheo (c = the melanosome concentrations of Table 1;
+//                           docs/interpretations.md)
 //   papillary/reticular   water, lipid, and v_blood × whole blood (Eq. 3):
 //   dermis                  HbO2 = Hb · oxy, Hb = Hb · (1 − oxy) with Hb = 147 mg/mL, and
 //                           HbCO, MetHb, SHb, bilirubin, β-carotene (blood) at Table 2 values.

@@ -105,6 +105,8 @@ std::vector<TableSchema> buildSchema() {
          fixedArray(&FP::refractiveIndexAt1300nm, kPigmented, 1.0)},
         {"water_percent", kPercent, fixedArray(&FP::waterFraction, kPigmented, 0.01)},
         {"lipid_percent", kPercent, fixedArray(&FP::lipidFraction, kPigmented, 0.01)},
+        {"keratin_percent", kPercent,
+         [](Specimen& s, double v) { s.fixed.epidermisKeratinFraction = v * 0.01; }},
         {"beta_carotene_mg_per_ml", kNonNegative, fixedValue(&FP::epidermisBetaCarotene_mgPerMl)}},
        {}});
   for (Layer l : kPigmented)
@@ -435,6 +437,7 @@ void validateSpecimen(const Specimen& s) {
   const FixedParameters& f = s.fixed;
   checkValue(s, "melanin refractive index", f.melaninRefractiveIndex, kRefractiveIndex);
   checkValue(s, "stratum corneum keratin fraction", f.stratumCorneumKeratinFraction, {0, 1, false});
+  checkValue(s, "epidermis keratin fraction", f.epidermisKeratinFraction, {0, 1, false});
   for (const auto& [what, value] : std::initializer_list<std::pair<const char*, double>>{
            {"blood hemoglobin_mg_per_ml", f.bloodHemoglobin_mgPerMl},
            {"blood methemoglobin_mg_per_ml", f.bloodMethemoglobin_mgPerMl},

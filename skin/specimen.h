@@ -42,6 +42,9 @@ struct FixedParameters {
   std::array<double, kLayerCount> waterFraction{};  ///< per layer, before any water reduction
   std::array<double, kLayerCount> lipidFraction{};
   double stratumCorneumKeratinFraction = 0;
+  /// Keratin of the living epidermis (granulosum, spinosum, basale), volume fraction; not in the
+  /// paper's tables (docs/interpretations.md).
+  double epidermisKeratinFraction = 0;
   double stratumCorneumUrocanicAcid_molPerL = 0;
   double dna_mgPerMl = 0;
 };

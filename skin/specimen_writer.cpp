@@ -59,6 +59,7 @@ std::string formatSpecimenToml(const Specimen& s, const std::string& header) {
   out << "refractive_index_at_1300nm = " << number(f.refractiveIndexAt1300nm[sb]) << "\n";
   out << "water_percent = " << percent(f.waterFraction[sb]) << "\n";
   out << "lipid_percent = " << percent(f.lipidFraction[sb]) << "\n";
+  out << "keratin_percent = " << percent(f.epidermisKeratinFraction) << "\n";
   out << "beta_carotene_mg_per_ml = " << number(f.epidermisBetaCarotene_mgPerMl) << "\n\n";
 
   for (Layer l : {Layer::StratumGranulosum, Layer::StratumSpinosum, Layer::StratumBasale}) {

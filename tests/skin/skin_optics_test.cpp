@@ -50,7 +50,9 @@ TEST(LayerComposition, EpidermisHoldsColloidalMelaninAtMelanosomeConcentrations)
   EXPECT_DOUBLE_EQ(c[index(Absorber::Lipid)], 0.20);
   EXPECT_DOUBLE_EQ(c[index(Absorber::BetaCarotene)], 2.1e-4);
   EXPECT_DOUBLE_EQ(c[index(Absorber::Dna)], 0.185);
-  EXPECT_EQ(c[index(Absorber::Keratin)], 0.0);
+  // The living cells' protein as keratin (the specimen file's [epidermis] keratin_percent = 20).
+  EXPECT_DOUBLE_EQ(c[index(Absorber::Keratin)], 0.20);
+  EXPECT_EQ(c[index(Absorber::UrocanicAcid)], 0.0);
   EXPECT_EQ(c[index(Absorber::Oxyhemoglobin)], 0.0);
 }
 
@@ -113,8 +115,8 @@ TEST(SkinOptics, UnitSpectraGiveHandSums) {
   // ζ ≡ 1: stratum corneum μa = 0.65 + 0.35 + 0.35 + 0.01 + 2.1e-4 + 0.185 = 1.54521 cm⁻¹.
   const SkinOptics optics = computeSkinOptics(specimen("S1"), unitSpectra(), 600.0);
   EXPECT_NEAR(optics[Layer::StratumCorneum].muATotal_perCm, 1.54521, 1e-12);
-  // Basale: 0.6 + 0.2 + 2.1e-4 + 0.185 + 0.72 + 0.032 = 1.73721.
-  EXPECT_NEAR(optics[Layer::StratumBasale].muATotal_perCm, 1.73721, 1e-12);
+  // Basale: 0.6 + 0.2 + 0.2 (keratin) + 2.1e-4 + 0.185 + 0.72 + 0.032 = 1.93721.
+  EXPECT_NEAR(optics[Layer::StratumBasale].muATotal_perCm, 1.93721, 1e-12);
   // Melanosome interior: 1·90 + 1·4 = 94 cm⁻¹.
   EXPECT_DOUBLE_EQ(optics.melanosomeInteriorMuA_perCm, 94.0);
   EXPECT_DOUBLE_EQ(optics.surfaceAspectRatio, 0.1);

@@ -188,6 +188,10 @@ TEST(SpecimenErrors, MissingKeyPointsAtItsTable) {
   const std::string text = editedS1("lipid_percent = 17.33", "");
   EXPECT_EQ(parseError(text), badTomlAt(text, "[reticular_dermis]") +
                                   ":1: missing key 'lipid_percent' in [reticular_dermis]");
+  // The living epidermis' keratin is not in the paper's tables but is required like the rest.
+  const std::string noKeratin = editedS1("keratin_percent = 20.0", "");
+  EXPECT_EQ(parseError(noKeratin), badTomlAt(noKeratin, "[epidermis]") +
+                                       ":1: missing key 'keratin_percent' in [epidermis]");
   const std::string noName = editedS1("name = \"S1\"", "");
   EXPECT_NE(parseError(noName).find("bad.toml:1:1: missing key 'name' in the top level"),
             std::string::npos)

@@ -63,6 +63,9 @@ void addScore(hylios::test::ScoreFamily& family, const std::string& what, Estima
                                               std::hypot(analogError, spectral.standardError)));
 }
 
+/// Analog subsurface exits below which a bin's mean exit radius is not compared (above).
+constexpr double kMinAnalogExits = 30;
+
 /// Every bin statistic of each bundle member's table against the analog table of its wavelength.
 void expectBundleAgrees(const std::vector<SkinWalk>& walks, const ExitTableSettings& settings) {
   std::vector<SkinOptics> optics;
@@ -91,7 +94,12 @@ void expectBundleAgrees(const std::vector<SkinWalk>& walks, const ExitTableSetti
         for (Layer layer : kAllLayers)
           addScore(family, at + "absorbed in " + std::string(layerName(layer)),
                    a.absorbedByLayer[index(layer)], s.absorbedByLayer[index(layer)], n);
-        addScore(family, at + "mean exit radius", a.meanExitRadiusCm, s.meanExitRadiusCm);
+        // The mean exit radius is a mean over the analog walks' exits, whose radii have a long
+        // tail (the rare paths through the dermis); from a handful of exits its sample σ misses
+        // that tail (S1 at 250 nm, bin 1: 7 exits of 6000 gave 0.009 ± 0.001 cm, 60 000 rays
+        // 0.057 ± 0.012), so it is scored only where the analog table met kMinAnalogExits.
+        if (a.subsurface.mean * static_cast<double>(n) >= kMinAnalogExits)
+          addScore(family, at + "mean exit radius", a.meanExitRadiusCm, s.meanExitRadiusCm);
         const double total = s.subsurface.mean + s.transmitted.mean + s.absorbed.mean;
         EXPECT_NEAR(total, 1.0,
                     4 * std::hypot(s.subsurface.standardError, s.absorbed.standardError,
