@@ -63,8 +63,8 @@ Setter fixedArray(std::array<double, kLayerCount> FixedParameters::*field,
     for (Layer l : layers) (s.fixed.*field)[index(l)] = v * scale;
   };
 }
-Setter fixedValue(double FixedParameters::*field) {
-  return [field](Specimen& s, double v) { s.fixed.*field = v; };
+Setter fixedValue(double FixedParameters::*field, double scale = 1.0) {
+  return [field, scale](Specimen& s, double v) { s.fixed.*field = v * scale; };
 }
 Setter specimenValue(double Specimen::*field, double scale) {
   return [field, scale](Specimen& s, double v) { s.*field = v * scale; };
@@ -92,8 +92,7 @@ std::vector<TableSchema> buildSchema() {
          fixedArray(&FP::refractiveIndexAt1300nm, {sc}, 1.0)},
         {"water_percent", kPercent, fixedArray(&FP::waterFraction, {sc}, 0.01)},
         {"lipid_percent", kPercent, fixedArray(&FP::lipidFraction, {sc}, 0.01)},
-        {"keratin_percent", kPercent,
-         [](Specimen& s, double v) { s.fixed.stratumCorneumKeratinFraction = v * 0.01; }},
+        {"keratin_percent", kPercent, fixedValue(&FP::stratumCorneumKeratinFraction, 0.01)},
         {"urocanic_acid_mol_per_l", kNonNegative,
          fixedValue(&FP::stratumCorneumUrocanicAcid_molPerL)},
         {"beta_carotene_mg_per_ml", kNonNegative,
@@ -105,8 +104,7 @@ std::vector<TableSchema> buildSchema() {
          fixedArray(&FP::refractiveIndexAt1300nm, kPigmented, 1.0)},
         {"water_percent", kPercent, fixedArray(&FP::waterFraction, kPigmented, 0.01)},
         {"lipid_percent", kPercent, fixedArray(&FP::lipidFraction, kPigmented, 0.01)},
-        {"keratin_percent", kPercent,
-         [](Specimen& s, double v) { s.fixed.epidermisKeratinFraction = v * 0.01; }},
+        {"keratin_percent", kPercent, fixedValue(&FP::epidermisKeratinFraction, 0.01)},
         {"beta_carotene_mg_per_ml", kNonNegative, fixedValue(&FP::epidermisBetaCarotene_mgPerMl)}},
        {}});
   for (Layer l : kPigmented)
