@@ -1,13 +1,18 @@
 // Tallies of HyLIoS walks: reflectance (total, surface, subsurface), transmittance, absorptance
 // per layer, with standard errors; optionally exit-direction and radial exit-offset histograms.
 // Mergeable in a fixed order, so parallel runs give identical results at any thread count.
+// Scores that carry a control weight (a spectral path's MIS ratio, E = 1 exactly) give the scalar
+// quantities as control-variate means (skin/core/controlled_mean.h); the histograms stay plain
+// per-path means.
 #pragma once
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "skin/core/controlled_mean.h"
 #include "skin/core/statistics.h"
 #include "skin/layer.h"
 #include "skin/skin_walk.h"
@@ -37,6 +42,11 @@ struct PathScore {
   std::array<double, kLayerCount> absorbedByLayer{};  ///< per layer (zeros when not booked)
   double absorbedInMelanosomes = 0;
   std::uint32_t events = 0;
+  /// A weight with expectation exactly 1 whose fluctuation the scores share (the spectral walk's
+  /// MIS ratio plus its split-entry surface weight); none for analog paths.
+  bool hasControlWeight = false;
+  double controlWeight = 1;
+  unsigned fold = 0;  ///< 0 or 1: the path's parity (ControlledMean's cross-fitting)
 };
 
 /// A score with the shared part of a path's outcome (end, exit direction and offset, events)
@@ -58,7 +68,9 @@ class SkinTally {
   /// An analog path: weight 1 to its one outcome.
   void record(const SkinPath& path);
   /// A weighted path (every quantity scores, zeros included; standard errors from the scores).
+  /// Every score of a tally carries a control weight or none does (std::logic_error otherwise).
   void record(const PathScore& score);
+  /// std::logic_error when one tally has control weights and the other has paths without.
   void merge(const SkinTally& other);
   /// Appends the tally's exact state (sums, counts, histograms; native byte order) to `bytes`, for
   /// a tally computed in another process of the same machine type (app/mpi_session.h).
@@ -69,15 +81,19 @@ class SkinTally {
                              std::size_t& offset);
 
   std::uint64_t rays() const { return total_.count(); }
-  Estimate reflectance() const { return total_.estimate(); }
-  Estimate surfaceReflectance() const { return surface_.estimate(); }
-  Estimate subsurfaceReflectance() const { return subsurface_.estimate(); }
-  Estimate transmittance() const { return transmitted_.estimate(); }
-  Estimate absorptance() const { return absorbed_.estimate(); }
-  Estimate absorptance(Layer layer) const { return absorbedByLayer_[index(layer)].estimate(); }
-  Estimate melanosomeAbsorptance() const { return melanosomeAbsorbed_.estimate(); }
+  Estimate reflectance() const { return estimateOf(total_, kTotal); }
+  Estimate surfaceReflectance() const { return estimateOf(surface_, kSurface); }
+  Estimate subsurfaceReflectance() const { return estimateOf(subsurface_, kSubsurface); }
+  Estimate transmittance() const { return estimateOf(transmitted_, kTransmitted); }
+  Estimate absorptance() const { return estimateOf(absorbed_, kAbsorbed); }
+  Estimate absorptance(Layer layer) const {
+    return estimateOf(absorbedByLayer_[index(layer)], kFirstLayer + index(layer));
+  }
+  Estimate melanosomeAbsorptance() const { return estimateOf(melanosomeAbsorbed_, kMelanosome); }
   /// Rays that hit SkinWalk::kMaxEvents (reported, never folded into another quantity).
-  Estimate eventLimited() const { return eventLimited_.estimate(); }
+  Estimate eventLimited() const { return estimateOf(eventLimited_, kEventLimited); }
+  /// Whether the scalar estimates are control-variate means (the scores carried control weights).
+  bool controlled() const { return !controlled_.empty(); }
   double meanEvents() const {
     return rays() == 0 ? 0.0 : static_cast<double>(events_) / static_cast<double>(rays());
   }
@@ -99,6 +115,26 @@ class SkinTally {
   RunningStatistic total_, surface_, subsurface_, transmitted_, absorbed_, melanosomeAbsorbed_,
       eventLimited_;
   std::array<RunningStatistic, kLayerCount> absorbedByLayer_{};
+  /// The same scalar quantities against the scores' control weights, in this order (empty when
+  /// the scores carry none).
+  enum : std::size_t {
+    kTotal,
+    kSurface,
+    kSubsurface,
+    kTransmitted,
+    kAbsorbed,
+    kMelanosome,
+    kEventLimited,
+    kFirstLayer
+  };
+  static constexpr std::size_t kControlledCount = kFirstLayer + kLayerCount;
+  std::vector<ControlledMean> controlled_;
+  /// The controlled mean of quantity `k` where the scores carried control weights that vary, else
+  /// the plain mean of `plain`.
+  Estimate estimateOf(const RunningStatistic& plain, std::size_t k) const;
+  /// The plain statistic of quantity `k`.
+  RunningStatistic& plainStatistic(std::size_t k);
+  const RunningStatistic& plainStatistic(std::size_t k) const;
   std::uint64_t events_ = 0;
   std::optional<Histogram> surfaceDirections_, subsurfaceDirections_, transmittedDirections_,
       radialExits_;

@@ -33,8 +33,8 @@ namespace hylios::skin {
 
 struct BundleRule {
   std::size_t maxWavelengths = 64;
-  double maxLogAngleSpread = 0.15;
-  double maxRayleighSpread = 1.0;  ///< the commands' curves use 0.8 (commandSpectralRun)
+  double maxLogAngleSpread = 0.15;  ///< the commands' curves use 0.3 (commandSpectralRun)
+  double maxRayleighSpread = 1.0;   ///< the commands' curves use 0.8 (commandSpectralRun)
 };
 
 /// Groups of indices into `optics` (each group in increasing wavelength; every index once).

@@ -16,9 +16,13 @@ struct Chunk {
   std::uint64_t first, last;
 };
 
-/// Records one spectral path into the tallies of its bundle's wavelengths.
-void recordPath(const SpectralPath& path, std::vector<SkinTally*>& tallies) {
+/// Records spectral path number `ray` into the tallies of its bundle's wavelengths, each score with
+/// its control weight: the MIS ratio plus the split entry's surface weight (expectation exactly 1,
+/// skin/spectral_walk.h), cross-fitted by the ray's parity (skin/core/controlled_mean.h).
+void recordPath(const SpectralPath& path, std::uint64_t ray, std::vector<SkinTally*>& tallies) {
   PathScore score = pathScoreOf(path);
+  score.hasControlWeight = true;
+  score.fold = static_cast<unsigned>(ray & 1);
   const bool perWavelengthDirection =
       path.end == PathEnd::Transmitted && !path.transmittedDirection.empty();
   for (std::size_t i = 0; i < tallies.size(); ++i) {
@@ -26,6 +30,7 @@ void recordPath(const SpectralPath& path, std::vector<SkinTally*>& tallies) {
     score.surfaceWeight = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i];
     score.surfaceDirection = path.surfaceDirection;
     score.absorbed = path.absorbedTotal[i];
+    score.controlWeight = score.absorbed + score.exitWeight + score.surfaceWeight;
     if (!path.absorbed.empty()) {
       score.absorbedByLayer = path.absorbed[i];
       score.absorbedInMelanosomes = 0;
@@ -47,8 +52,11 @@ SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
   spectral.walk.splitEntryReflection = true;
   spectral.tally = run.tally;
   // Curves: a tighter Rayleigh bound than the tables' (skin/spectral_bundle.h), so that no edge
-  // of a visible bundle has a standard error above the analog walk's.
+  // of a visible bundle has a standard error above the analog walk's; a wider θo bound, since
+  // the tallies' control variate (skin/core/controlled_mean.h) takes most of the MIS ratio's
+  // variance at a bundle's edges (docs/benchmarks.md, session 21).
   spectral.bundles.maxRayleighSpread = 0.8;
+  spectral.bundles.maxLogAngleSpread = 0.3;
   return spectral;
 }
 
@@ -106,7 +114,7 @@ SpectralChunks simulateSkinSpectralChunks(const std::vector<SkinOptics>& optics,
     for (std::uint64_t ray = chunk.first; ray < chunk.last; ++ray) {
       Rng rng(options.seed, streams[chunk.bundle], ray);
       walks[chunk.bundle].trace(incident, rng, path);
-      recordPath(path, pointers);
+      recordPath(path, ray, pointers);
     }
   });
   return result;
