@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
-#include <utility>
 
 #include "skin/core/constants.h"
 
@@ -108,8 +107,7 @@ void SkinTally::record(const PathScore& score) {
                            (score.hasControlWeight ? "with" : "without") +
                            " a control weight in a tally of paths " +
                            (score.hasControlWeight ? "without" : "with") + " one");
-  // The scalar scores in the order of the k* indices (skin_tally.h).
-  std::array<double, kControlledCount> scores{};
+  std::array<double, kQuantities> scores{};  // in the order of the k* indices (skin_tally.h)
   scores[kTotal] = (surface || subsurface ? w : 0.0) + sw;
   scores[kSurface] = (surface ? w : 0.0) + sw;
   scores[kSubsurface] = subsurface ? w : 0.0;
@@ -118,11 +116,11 @@ void SkinTally::record(const PathScore& score) {
   scores[kMelanosome] = score.absorbedInMelanosomes;
   scores[kEventLimited] = score.end == PathEnd::EventLimit ? w : 0.0;
   for (std::size_t i = 0; i < kLayerCount; ++i) scores[kFirstLayer + i] = score.absorbedByLayer[i];
-  for (std::size_t k = 0; k < kControlledCount; ++k) plainStatistic(k).add(scores[k]);
   if (score.hasControlWeight) {
-    if (controlled_.empty()) controlled_.resize(kControlledCount);
-    for (std::size_t k = 0; k < kControlledCount; ++k)
-      controlled_[k].add(scores[k], score.controlWeight, score.fold);
+    if (!controlled_) controlled_.emplace(kQuantities);
+    controlled_->add(scores.data(), score.controlWeight, score.fold);
+  } else {
+    for (std::size_t k = 0; k < kQuantities; ++k) plain_[k].add(scores[k]);
   }
   events_ += score.events;
   if (surfaceDirections_) {
@@ -143,12 +141,11 @@ void SkinTally::record(const PathScore& score) {
 void SkinTally::merge(const SkinTally& other) {
   if (other.rays() > 0 && rays() > 0 && controlled() != other.controlled())
     throw std::logic_error("SkinTally::merge: tallies with and without control weights");
-  if (other.controlled()) {
-    if (controlled_.empty()) controlled_.resize(kControlledCount);
-    for (std::size_t k = 0; k < kControlledCount; ++k) controlled_[k].merge(other.controlled_[k]);
+  if (other.controlled_) {
+    if (!controlled_) controlled_.emplace(kQuantities);
+    controlled_->merge(*other.controlled_);
   }
-  for (std::size_t k = 0; k < kControlledCount; ++k)
-    plainStatistic(k).merge(other.plainStatistic(k));
+  for (std::size_t k = 0; k < kQuantities; ++k) plain_[k].merge(other.plain_[k]);
   events_ += other.events_;
   if (surfaceDirections_) {
     surfaceDirections_->merge(*other.surfaceDirections_);
@@ -158,45 +155,10 @@ void SkinTally::merge(const SkinTally& other) {
   if (radialExits_) radialExits_->merge(*other.radialExits_);
 }
 
-RunningStatistic& SkinTally::plainStatistic(std::size_t k) {
-  return const_cast<RunningStatistic&>(std::as_const(*this).plainStatistic(k));
-}
-
-const RunningStatistic& SkinTally::plainStatistic(std::size_t k) const {
-  switch (k) {
-    case kTotal:
-      return total_;
-    case kSurface:
-      return surface_;
-    case kSubsurface:
-      return subsurface_;
-    case kTransmitted:
-      return transmitted_;
-    case kAbsorbed:
-      return absorbed_;
-    case kMelanosome:
-      return melanosomeAbsorbed_;
-    case kEventLimited:
-      return eventLimited_;
-    default:
-      return absorbedByLayer_.at(k - kFirstLayer);
-  }
-}
-
-Estimate SkinTally::estimateOf(const RunningStatistic& plain, std::size_t k) const {
-  if (controlled_.empty()) return plain.estimate();
-  const ControlledMean& c = controlled_[k];
-  if (c.beta(0) == 0 && c.beta(1) == 0) return plain.estimate();  // U never varied
-  return c.estimate();
-}
-
 void SkinTally::appendBytes(std::string& bytes) const {
-  for (const RunningStatistic* s : {&total_, &surface_, &subsurface_, &transmitted_, &absorbed_,
-                                    &melanosomeAbsorbed_, &eventLimited_})
-    putStatistic(bytes, *s);
-  for (const RunningStatistic& s : absorbedByLayer_) putStatistic(bytes, s);
+  for (const RunningStatistic& s : plain_) putStatistic(bytes, s);
   put(bytes, static_cast<std::uint8_t>(controlled() ? 1 : 0));
-  for (const ControlledMean& c : controlled_) c.appendBytes(bytes);
+  if (controlled_) controlled_->appendBytes(bytes);
   put(bytes, events_);
   putHistogram(bytes, surfaceDirections_);
   putHistogram(bytes, subsurfaceDirections_);
@@ -207,13 +169,9 @@ void SkinTally::appendBytes(std::string& bytes) const {
 SkinTally SkinTally::fromBytes(const TallyOptions& options, const std::string& bytes,
                                std::size_t& offset) {
   SkinTally t(options);
-  for (RunningStatistic* s : {&t.total_, &t.surface_, &t.subsurface_, &t.transmitted_, &t.absorbed_,
-                              &t.melanosomeAbsorbed_, &t.eventLimited_})
-    *s = takeStatistic(bytes, offset);
-  for (RunningStatistic& s : t.absorbedByLayer_) s = takeStatistic(bytes, offset);
+  for (RunningStatistic& s : t.plain_) s = takeStatistic(bytes, offset);
   if (take<std::uint8_t>(bytes, offset) != 0)
-    for (std::size_t k = 0; k < kControlledCount; ++k)
-      t.controlled_.push_back(ControlledMean::fromBytes(bytes, offset));
+    t.controlled_ = ControlledMeans::fromBytes(kQuantities, bytes, offset);
   t.events_ = take<std::uint64_t>(bytes, offset);
   takeHistogram(bytes, offset, t.surfaceDirections_);
   takeHistogram(bytes, offset, t.subsurfaceDirections_);

@@ -2,7 +2,7 @@
 // per layer, with standard errors; optionally exit-direction and radial exit-offset histograms.
 // Mergeable in a fixed order, so parallel runs give identical results at any thread count.
 // Scores that carry a control weight (a spectral path's MIS ratio, E = 1 exactly) give the scalar
-// quantities as control-variate means (skin/core/controlled_mean.h); the histograms stay plain
+// quantities as control-variate means (skin/core/controlled_means.h); the histograms stay plain
 // per-path means.
 #pragma once
 #include <array>
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "skin/core/controlled_mean.h"
+#include "skin/core/controlled_means.h"
 #include "skin/core/statistics.h"
 #include "skin/layer.h"
 #include "skin/skin_walk.h"
@@ -46,7 +46,7 @@ struct PathScore {
   /// MIS ratio plus its split-entry surface weight); none for analog paths.
   bool hasControlWeight = false;
   double controlWeight = 1;
-  unsigned fold = 0;  ///< 0 or 1: the path's parity (ControlledMean's cross-fitting)
+  unsigned fold = 0;  ///< 0 or 1: the path's parity (ControlledMeans' cross-fitting)
 };
 
 /// A score with the shared part of a path's outcome (end, exit direction and offset, events)
@@ -80,20 +80,18 @@ class SkinTally {
   static SkinTally fromBytes(const TallyOptions& options, const std::string& bytes,
                              std::size_t& offset);
 
-  std::uint64_t rays() const { return total_.count(); }
-  Estimate reflectance() const { return estimateOf(total_, kTotal); }
-  Estimate surfaceReflectance() const { return estimateOf(surface_, kSurface); }
-  Estimate subsurfaceReflectance() const { return estimateOf(subsurface_, kSubsurface); }
-  Estimate transmittance() const { return estimateOf(transmitted_, kTransmitted); }
-  Estimate absorptance() const { return estimateOf(absorbed_, kAbsorbed); }
-  Estimate absorptance(Layer layer) const {
-    return estimateOf(absorbedByLayer_[index(layer)], kFirstLayer + index(layer));
-  }
-  Estimate melanosomeAbsorptance() const { return estimateOf(melanosomeAbsorbed_, kMelanosome); }
+  std::uint64_t rays() const { return controlled_ ? controlled_->count() : plain_[kTotal].count(); }
+  Estimate reflectance() const { return estimateOf(kTotal); }
+  Estimate surfaceReflectance() const { return estimateOf(kSurface); }
+  Estimate subsurfaceReflectance() const { return estimateOf(kSubsurface); }
+  Estimate transmittance() const { return estimateOf(kTransmitted); }
+  Estimate absorptance() const { return estimateOf(kAbsorbed); }
+  Estimate absorptance(Layer layer) const { return estimateOf(kFirstLayer + index(layer)); }
+  Estimate melanosomeAbsorptance() const { return estimateOf(kMelanosome); }
   /// Rays that hit SkinWalk::kMaxEvents (reported, never folded into another quantity).
-  Estimate eventLimited() const { return estimateOf(eventLimited_, kEventLimited); }
+  Estimate eventLimited() const { return estimateOf(kEventLimited); }
   /// Whether the scalar estimates are control-variate means (the scores carried control weights).
-  bool controlled() const { return !controlled_.empty(); }
+  bool controlled() const { return controlled_.has_value(); }
   double meanEvents() const {
     return rays() == 0 ? 0.0 : static_cast<double>(events_) / static_cast<double>(rays());
   }
@@ -111,12 +109,7 @@ class SkinTally {
 
  private:
   TallyOptions options_;
-  // Per-path scores (0/1 for analog paths: sums of 1.0 are exact, so merging stays order-free).
-  RunningStatistic total_, surface_, subsurface_, transmitted_, absorbed_, melanosomeAbsorbed_,
-      eventLimited_;
-  std::array<RunningStatistic, kLayerCount> absorbedByLayer_{};
-  /// The same scalar quantities against the scores' control weights, in this order (empty when
-  /// the scores carry none).
+  /// The scalar quantities, in this order.
   enum : std::size_t {
     kTotal,
     kSurface,
@@ -127,14 +120,14 @@ class SkinTally {
     kEventLimited,
     kFirstLayer
   };
-  static constexpr std::size_t kControlledCount = kFirstLayer + kLayerCount;
-  std::vector<ControlledMean> controlled_;
-  /// The controlled mean of quantity `k` where the scores carried control weights that vary, else
-  /// the plain mean of `plain`.
-  Estimate estimateOf(const RunningStatistic& plain, std::size_t k) const;
-  /// The plain statistic of quantity `k`.
-  RunningStatistic& plainStatistic(std::size_t k);
-  const RunningStatistic& plainStatistic(std::size_t k) const;
+  static constexpr std::size_t kQuantities = kFirstLayer + kLayerCount;
+  /// Per-path scores of analog paths (0/1: sums of 1.0 are exact, so merging stays order-free),
+  /// or, for scores with control weights, the control-variate means (one of the two is used).
+  std::array<RunningStatistic, kQuantities> plain_{};
+  std::optional<ControlledMeans> controlled_;
+  Estimate estimateOf(std::size_t k) const {
+    return controlled_ ? controlled_->estimate(k) : plain_[k].estimate();
+  }
   std::uint64_t events_ = 0;
   std::optional<Histogram> surfaceDirections_, subsurfaceDirections_, transmittedDirections_,
       radialExits_;

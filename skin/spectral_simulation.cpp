@@ -18,7 +18,7 @@ struct Chunk {
 
 /// Records spectral path number `ray` into the tallies of its bundle's wavelengths, each score with
 /// its control weight: the MIS ratio plus the split entry's surface weight (expectation exactly 1,
-/// skin/spectral_walk.h), cross-fitted by the ray's parity (skin/core/controlled_mean.h).
+/// skin/spectral_walk.h), cross-fitted by the ray's parity (skin/core/controlled_means.h).
 void recordPath(const SpectralPath& path, std::uint64_t ray, std::vector<SkinTally*>& tallies) {
   PathScore score = pathScoreOf(path);
   score.hasControlWeight = true;
@@ -53,7 +53,7 @@ SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
   spectral.tally = run.tally;
   // Curves: a tighter Rayleigh bound than the tables' (skin/spectral_bundle.h), so that no edge
   // of a visible bundle has a standard error above the analog walk's; a wider θo bound, since
-  // the tallies' control variate (skin/core/controlled_mean.h) takes most of the MIS ratio's
+  // the tallies' control variate (skin/core/controlled_means.h) takes most of the MIS ratio's
   // variance at a bundle's edges (docs/benchmarks.md, session 21).
   spectral.bundles.maxRayleighSpread = 0.8;
   spectral.bundles.maxLogAngleSpread = 0.3;

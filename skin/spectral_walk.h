@@ -23,7 +23,7 @@
 // p_λ(path)/mean_j p_j(path). The mixture bounds that ratio by N whatever the bundle, and it is
 // exact in expectation for every λ. The walk tracks log p_λ relative to a common factor.
 // The ratio's expectation is exactly 1, so the tallies subtract its fluctuation as a control
-// variate (skin/core/controlled_mean.h, SkinTally).
+// variate (skin/core/controlled_means.h, SkinTally).
 // Russian roulette on the largest weight (checked at layer boundaries) ends paths unbiasedly.
 // Degenerate ratios (a delta whose position depends on λ: the redraw cap's macro normal with
 // different indices) give weight 0 to every λ whose delta lies elsewhere, which is still exact.

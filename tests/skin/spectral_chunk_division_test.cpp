@@ -101,11 +101,12 @@ TEST(SpectralChunkDivision, HistogramsTravelAndMergeExactly) {
   }
   // 24 direction bins + 2 (under/overflow) per histogram, three of them, and a radial one of 12:
   // 13 statistics (7 quantities, 6 layers) × 24 bytes, a flag byte and (spectral paths carry
-  // control weights) the 13 control-variate means, 2 folds × (a count and 5 sums) each, the event
-  // count, then per histogram a packet count and 2 doubles per bin. About 1.6 kB per wavelength
-  // and chunk without histograms; an analog tally has no control-variate means.
+  // control weights) the control-variate sums: per fold a count and the sums of U and U², per
+  // quantity and fold the sums of T, T² and T·U; the event count, then per histogram a packet
+  // count and 2 doubles per bin. About 1 kB per wavelength and chunk without histograms; an analog
+  // tally has no control-variate sums.
   EXPECT_EQ(bytesOf(whole[0]).size(),
-            13 * 24 + 1 + 13 * 2 * 48 + 8 + 3 * (8 + 26 * 16) + (8 + 12 * 16));
+            13 * 24 + 1 + 2 * 24 + 26 * 24 + 8 + 3 * (8 + 26 * 16) + (8 + 12 * 16));
   EXPECT_EQ(bytesOf(SkinTally()).size(), 13u * 24 + 1 + 8);
 }
 
