@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "skin/core/controlled_means.h"
 #include "skin/core/statistics.h"
