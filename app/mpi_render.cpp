@@ -1,11 +1,11 @@
 #include "app/mpi_render.h"
 
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "app/mpi_session.h"
 #include "renderer/image/film_output.h"
+#include "skin/core/state_bytes.h"
 
 namespace hylios {
 namespace {
@@ -24,40 +24,27 @@ void sumFilmOnRoot(const Film& film, Film* whole) {
                         std::move(secondHalfCounts), film.samplesPerPixelDone());
 }
 
-template <class T>
-void put(std::string& bytes, const T& value) {
-  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <class T>
-T take(const std::string& bytes, std::size_t& offset) {
-  T value;
-  std::memcpy(&value, bytes.data() + offset, sizeof value);
-  offset += sizeof value;
-  return value;
-}
-
 std::string noiseBytes(const std::vector<GroupNoise>& noise) {
   std::string bytes;
-  put(bytes, static_cast<std::uint64_t>(noise.size()));
+  skin::putBytes(bytes, static_cast<std::uint64_t>(noise.size()));
   for (const GroupNoise& g : noise) {
-    put(bytes, static_cast<std::uint64_t>(g.group.size()));
+    skin::putBytes(bytes, static_cast<std::uint64_t>(g.group.size()));
     bytes += g.group;
-    put(bytes, g.medianRelative);
-    put(bytes, static_cast<std::uint64_t>(g.pixels));
+    skin::putBytes(bytes, g.medianRelative);
+    skin::putBytes(bytes, static_cast<std::uint64_t>(g.pixels));
   }
   return bytes;
 }
 
 std::vector<GroupNoise> noiseFromBytes(const std::string& bytes) {
   std::size_t offset = 0;
-  std::vector<GroupNoise> noise(take<std::uint64_t>(bytes, offset));
+  std::vector<GroupNoise> noise(skin::takeBytes<std::uint64_t>(bytes, offset, "noiseFromBytes"));
   for (GroupNoise& g : noise) {
-    const auto length = take<std::uint64_t>(bytes, offset);
+    const auto length = skin::takeBytes<std::uint64_t>(bytes, offset, "noiseFromBytes");
     g.group = bytes.substr(offset, length);
     offset += length;
-    g.medianRelative = take<double>(bytes, offset);
-    g.pixels = take<std::uint64_t>(bytes, offset);
+    g.medianRelative = skin::takeBytes<double>(bytes, offset, "noiseFromBytes");
+    g.pixels = skin::takeBytes<std::uint64_t>(bytes, offset, "noiseFromBytes");
   }
   return noise;
 }

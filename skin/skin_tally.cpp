@@ -2,35 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 #include "skin/core/constants.h"
+#include "skin/core/state_bytes.h"
 
 namespace hylios::skin {
 namespace {
 
 template <class T>
-void put(std::string& bytes, const T& value) {
-  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <class T>
 T take(const std::string& bytes, std::size_t& offset) {
-  if (offset > bytes.size() || bytes.size() - offset < sizeof(T))
-    throw std::invalid_argument("SkinTally::fromBytes: the state ends early (byte " +
-                                std::to_string(offset) + " of " + std::to_string(bytes.size()) +
-                                ")");
-  T value;
-  std::memcpy(&value, bytes.data() + offset, sizeof value);
-  offset += sizeof value;
-  return value;
+  return takeBytes<T>(bytes, offset, "SkinTally::fromBytes");
 }
 
 void putStatistic(std::string& bytes, const RunningStatistic& s) {
-  put(bytes, s.count());
-  put(bytes, s.sum());
-  put(bytes, s.sumSquares());
+  putBytes(bytes, s.count());
+  putBytes(bytes, s.sum());
+  putBytes(bytes, s.sumSquares());
 }
 
 RunningStatistic takeStatistic(const std::string& bytes, std::size_t& offset) {
@@ -42,10 +30,10 @@ RunningStatistic takeStatistic(const std::string& bytes, std::size_t& offset) {
 
 void putHistogram(std::string& bytes, const std::optional<Histogram>& h) {
   if (!h) return;
-  put(bytes, h->packets());
+  putBytes(bytes, h->packets());
   for (std::size_t i = 0; i < h->sums().size(); ++i) {
-    put(bytes, h->sums()[i]);
-    put(bytes, h->sumSquares()[i]);
+    putBytes(bytes, h->sums()[i]);
+    putBytes(bytes, h->sumSquares()[i]);
   }
 }
 
@@ -157,9 +145,9 @@ void SkinTally::merge(const SkinTally& other) {
 
 void SkinTally::appendBytes(std::string& bytes) const {
   for (const RunningStatistic& s : plain_) putStatistic(bytes, s);
-  put(bytes, static_cast<std::uint8_t>(controlled() ? 1 : 0));
+  putBytes(bytes, static_cast<std::uint8_t>(controlled() ? 1 : 0));
   if (controlled_) controlled_->appendBytes(bytes);
-  put(bytes, events_);
+  putBytes(bytes, events_);
   putHistogram(bytes, surfaceDirections_);
   putHistogram(bytes, subsurfaceDirections_);
   putHistogram(bytes, transmittedDirections_);

@@ -1,7 +1,8 @@
 #include "skin/core/controlled_means.h"
 
 #include <cmath>
-#include <cstring>
+
+#include "skin/core/state_bytes.h"
 
 namespace hylios::skin {
 namespace {
@@ -9,6 +10,8 @@ namespace {
 /// Below this sample variance of U (per path) the control weight is taken as constant: its
 /// rounding (U = (1 − F) + F) is ~1e-16 and must not become a β.
 constexpr double kConstantControlVariance = 1e-24;
+
+constexpr const char* kReader = "ControlledMeans::fromBytes";
 
 struct Moments {
   double varT, varU, cov;
@@ -20,19 +23,6 @@ Moments momentsOf(const Control& c, const Sums& s) {
   const double mt = s.t / n, mu = c.u / n;
   return {std::fmax(0.0, s.tt / n - mt * mt), std::fmax(0.0, c.uu / n - mu * mu),
           s.tu / n - mt * mu};
-}
-
-template <class T>
-void put(std::string& bytes, const T& value) {
-  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <class T>
-T take(const std::string& bytes, std::size_t& offset) {
-  T value;
-  std::memcpy(&value, bytes.data() + offset, sizeof value);
-  offset += sizeof value;
-  return value;
 }
 
 }  // namespace
@@ -81,35 +71,29 @@ Estimate ControlledMeans::estimate(std::size_t k) const {
 
 void ControlledMeans::appendBytes(std::string& bytes) const {
   for (const Control& c : control_) {
-    put(bytes, c.n);
-    put(bytes, c.u);
-    put(bytes, c.uu);
+    putBytes(bytes, c.n);
+    putBytes(bytes, c.u);
+    putBytes(bytes, c.uu);
   }
   for (const Sums& s : sums_) {
-    put(bytes, s.t);
-    put(bytes, s.tt);
-    put(bytes, s.tu);
+    putBytes(bytes, s.t);
+    putBytes(bytes, s.tt);
+    putBytes(bytes, s.tu);
   }
 }
 
 ControlledMeans ControlledMeans::fromBytes(std::size_t quantities, const std::string& bytes,
                                            std::size_t& offset) {
-  const std::size_t size =
-      2 * (sizeof(std::uint64_t) + 2 * sizeof(double)) + 2 * quantities * 3 * sizeof(double);
-  if (offset > bytes.size() || bytes.size() - offset < size)
-    throw std::invalid_argument("ControlledMeans::fromBytes: the state ends early (byte " +
-                                std::to_string(offset) + " of " + std::to_string(bytes.size()) +
-                                ")");
   ControlledMeans c(quantities);
   for (Control& control : c.control_) {
-    control.n = take<std::uint64_t>(bytes, offset);
-    control.u = take<double>(bytes, offset);
-    control.uu = take<double>(bytes, offset);
+    control.n = takeBytes<std::uint64_t>(bytes, offset, kReader);
+    control.u = takeBytes<double>(bytes, offset, kReader);
+    control.uu = takeBytes<double>(bytes, offset, kReader);
   }
   for (Sums& s : c.sums_) {
-    s.t = take<double>(bytes, offset);
-    s.tt = take<double>(bytes, offset);
-    s.tu = take<double>(bytes, offset);
+    s.t = takeBytes<double>(bytes, offset, kReader);
+    s.tt = takeBytes<double>(bytes, offset, kReader);
+    s.tu = takeBytes<double>(bytes, offset, kReader);
   }
   return c;
 }
