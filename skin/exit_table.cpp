@@ -286,11 +286,12 @@ void ExitTable::tally(Bin& bin, const SpectralPath& path, std::size_t member,
       break;
   }
   double absorbedHere = 0;
+  const std::size_t members = path.exitWeight.size();
   for (std::size_t l = 0; l < kLayerCount; ++l) {
-    const double a = path.absorbed[member][l];
+    const double a = path.absorbed[l * members + member];
     bin.absorbed[l] += a;
     bin.absorbedSquaresByLayer[l] += a * a;
-    bin.absorbedInMelanosome[l] += path.absorbedInMelanosomes[member][l];
+    bin.absorbedInMelanosome[l] += path.absorbedInMelanosomes[l * members + member];
     absorbedHere += a;
   }
   bin.absorbedSquares += absorbedHere * absorbedHere;

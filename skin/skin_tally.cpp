@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "skin/core/constants.h"
 #include "skin/core/state_bytes.h"
@@ -58,6 +60,21 @@ SkinTally::SkinTally(const TallyOptions& options) : options_(options) {
     transmittedDirections_.emplace(0.0, bins, options.polarBins * options.azimuthBins);
   }
   if (options.radialBins > 0) radialExits_.emplace(0.0, options.maxRadiusCm, options.radialBins);
+}
+
+SkinTally SkinTally::fromControlledMeans(const TallyOptions& options, ControlledMeans means,
+                                         std::uint64_t events) {
+  if (options.polarBins > 0 || options.radialBins > 0)
+    throw std::invalid_argument(
+        "SkinTally::fromControlledMeans: the options ask for histograms, which the sums lack");
+  if (means.quantities() != kQuantities)
+    throw std::invalid_argument(
+        "SkinTally::fromControlledMeans: " + std::to_string(means.quantities()) +
+        " quantities, not " + std::to_string(kQuantities));
+  SkinTally tally(options);
+  tally.controlled_ = std::move(means);
+  tally.events_ = events;
+  return tally;
 }
 
 std::size_t SkinTally::directionBin(const Vec3& exitDirection) const {

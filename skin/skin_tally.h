@@ -63,7 +63,27 @@ PathScore pathScoreOf(const Path& path) {
 
 class SkinTally {
  public:
+  /// The scalar quantities, in this order (ControlledMeans' quantity k; absorptance per layer at
+  /// kFirstLayer + index(layer)).
+  enum Quantity : std::size_t {
+    kTotal,
+    kSurface,
+    kSubsurface,
+    kTransmitted,
+    kAbsorbed,
+    kMelanosome,
+    kEventLimited,
+    kFirstLayer
+  };
+  static constexpr std::size_t kQuantities = kFirstLayer + kLayerCount;
+
   explicit SkinTally(const TallyOptions& options = {});
+  /// The tally of control-weighted paths whose scalar sums are `means` (kQuantities quantities)
+  /// and whose events add up to `events`, as recording them one by one would have made it
+  /// (skin/spectral_bundle_tally.h). Throws std::invalid_argument for options with histograms
+  /// (they are not in `means`) or another quantity count.
+  static SkinTally fromControlledMeans(const TallyOptions& options, ControlledMeans means,
+                                       std::uint64_t events);
   /// An analog path: weight 1 to its one outcome.
   void record(const SkinPath& path);
   /// A weighted path (every quantity scores, zeros included; standard errors from the scores).
@@ -108,18 +128,6 @@ class SkinTally {
 
  private:
   TallyOptions options_;
-  /// The scalar quantities, in this order.
-  enum : std::size_t {
-    kTotal,
-    kSurface,
-    kSubsurface,
-    kTransmitted,
-    kAbsorbed,
-    kMelanosome,
-    kEventLimited,
-    kFirstLayer
-  };
-  static constexpr std::size_t kQuantities = kFirstLayer + kLayerCount;
   /// Per-path scores of analog paths (0/1: sums of 1.0 are exact, so merging stays order-free),
   /// or, for scores with control weights, the control-variate means (one of the two is used).
   std::array<RunningStatistic, kQuantities> plain_{};

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "skin/spectral_bundle_tally.h"
 #include "skin/spectral_walk.h"
 
 namespace hylios::skin {
@@ -16,30 +17,6 @@ struct Chunk {
   std::uint64_t first, last;
 };
 
-/// Records spectral path number `ray` into the tallies of its bundle's wavelengths, each score with
-/// its control weight: the MIS ratio plus the split entry's surface weight (expectation exactly 1,
-/// skin/spectral_walk.h), cross-fitted by the ray's parity (skin/core/controlled_means.h).
-void recordPath(const SpectralPath& path, std::uint64_t ray, std::vector<SkinTally*>& tallies) {
-  PathScore score = pathScoreOf(path);
-  score.hasControlWeight = true;
-  score.fold = static_cast<unsigned>(ray & 1);
-  const bool perWavelengthDirection =
-      path.end == PathEnd::Transmitted && !path.transmittedDirection.empty();
-  for (std::size_t i = 0; i < tallies.size(); ++i) {
-    score.exitWeight = path.exitWeight[i];
-    score.surfaceWeight = path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i];
-    score.surfaceDirection = path.surfaceDirection;
-    score.absorbed = path.absorbedTotal[i];
-    score.controlWeight = score.absorbed + score.exitWeight + score.surfaceWeight;
-    if (!path.absorbed.empty()) {
-      score.absorbedByLayer = path.absorbed[i];
-      score.absorbedInMelanosomes = 0;
-      for (double inLayer : path.absorbedInMelanosomes[i]) score.absorbedInMelanosomes += inLayer;
-    }
-    if (perWavelengthDirection) score.exitDirection = path.transmittedDirection[i];
-    tallies[i]->record(score);
-  }
-}
 }  // namespace
 
 SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
@@ -106,16 +83,14 @@ SpectralChunks simulateSkinSpectralChunks(const std::vector<SkinOptics>& optics,
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
     if (c % parts != part) return;  // another part's chunk
     const Chunk& chunk = chunks[c];
-    std::vector<SkinTally>& tallies = chunkTallies[c];
-    tallies.assign(bundles[chunk.bundle].size(), SkinTally(options.tally));
-    std::vector<SkinTally*> pointers;
-    for (SkinTally& t : tallies) pointers.push_back(&t);
+    SpectralBundleTally tally(bundles[chunk.bundle].size(), options.tally);
     SpectralPath path;
     for (std::uint64_t ray = chunk.first; ray < chunk.last; ++ray) {
       Rng rng(options.seed, streams[chunk.bundle], ray);
       walks[chunk.bundle].trace(incident, rng, path);
-      recordPath(path, ray, pointers);
+      tally.record(path, ray);
     }
+    chunkTallies[c] = tally.tallies();
   });
   return result;
 }

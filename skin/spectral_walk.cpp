@@ -61,8 +61,8 @@ class SpectralWalk::State {
   State(SpectralPath& p, std::size_t n, bool layers) : path(p), ratio(p.scratch), stays(p.stays) {
     path.exitWeight.assign(n, 0.0);
     path.absorbedTotal.assign(n, 0.0);
-    path.absorbed.assign(layers ? n : 0, {});
-    path.absorbedInMelanosomes.assign(layers ? n : 0, {});
+    path.absorbed.assign(layers ? kLayerCount * n : 0, 0.0);
+    path.absorbedInMelanosomes.assign(layers ? kLayerCount * n : 0, 0.0);
     path.transmittedDirection.clear();
     path.surfaceWeight.clear();
     stays.clear();
@@ -474,22 +474,16 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
   std::array<spectral_weights::SlabAbsorption, kLayerCount> slabs{};
   for (std::size_t k = 0; k < slabs_.size(); ++k)
     slabs[k] = {slabs_[k].muA_perCm.data(), index(slabs_[k].layer), slabs_[k].largestMuA_perCm};
-  // Workspace: the transmittance per λ, then (layer absorption) the losses by layer.
+  // Workspace: the transmittance per λ (and the path depths without layer absorption).
   std::vector<double>& work = path.work;
   double* transmitted = nullptr;
-  if (options_.layerAbsorption) {            // each stay's loss, in the order the path made them
-    work.resize((1 + 2 * kLayerCount) * n);  // every value written by stayLosses
+  if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
+    work.resize(n);
     transmitted = work.data();
-    double* absorbed = transmitted + n;
-    double* inMelanin = absorbed + kLayerCount * n;
     spectral_weights::stayLosses(n, s.stays.data(), s.stays.size(), slabs.data(),
                                  melaninMuA_perCm_.data(), largestMelaninMuA_perCm_, ratio.data(),
-                                 transmitted, absorbed, inMelanin);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
-        path.absorbed[i][layer] += absorbed[layer * n + i];
-        path.absorbedInMelanosomes[i][layer] += inMelanin[layer * n + i];
-      }
+                                 transmitted, path.absorbed.data(),
+                                 path.absorbedInMelanosomes.data());
   } else {
     work.resize(2 * n);
     transmitted = work.data();

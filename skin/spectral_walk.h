@@ -74,12 +74,13 @@ struct SpectralPath {
   Vec3 surfaceDirection;
   /// Per λ: absorbed weight, estimated as MIS ratio − exits (exact in expectation: 1 − R − T).
   std::vector<double> absorbedTotal;
-  /// Per λ and layer (WalkOptions::layerAbsorption): weight absorbed on the way, booked per stay
-  /// in a layer (layers' absorbers and melanosomes together; empty otherwise).
-  std::vector<std::array<double, kLayerCount>> absorbed;
-  /// Per λ and layer: the part of `absorbed` taken by melanin inside melanosomes (each stay's loss
+  /// Per layer and λ, at index(layer)·N + λ for a bundle of N (WalkOptions::layerAbsorption):
+  /// weight absorbed on the way, booked per stay in a layer (layers' absorbers and melanosomes
+  /// together; empty otherwise). Layer by layer, so that per-λ loops read contiguous values.
+  std::vector<double> absorbed;
+  /// The same places: the part of `absorbed` taken by melanin inside melanosomes (each stay's loss
   /// shared by optical depth).
-  std::vector<std::array<double, kLayerCount>> absorbedInMelanosomes;
+  std::vector<double> absorbedInMelanosomes;
 
   /// The walk's workspace (kept to avoid allocations per path).
   struct Stay {

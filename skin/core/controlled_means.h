@@ -63,6 +63,7 @@ class ControlledMeans {
                                    std::size_t& offset);
 
  private:
+  friend class ControlledMeansArray;  // fills the sums of many members at once
   struct Control {
     std::uint64_t n = 0;
     double u = 0, uu = 0;  ///< sums of U, U²
