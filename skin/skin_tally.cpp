@@ -161,9 +161,12 @@ void SkinTally::merge(const SkinTally& other) {
 }
 
 void SkinTally::appendBytes(std::string& bytes) const {
-  for (const RunningStatistic& s : plain_) putStatistic(bytes, s);
+  // Either the control-variate sums or the plain statistics: a tally holds one kind of path.
   putBytes(bytes, static_cast<std::uint8_t>(controlled() ? 1 : 0));
-  if (controlled_) controlled_->appendBytes(bytes);
+  if (controlled_)
+    controlled_->appendBytes(bytes);
+  else
+    for (const RunningStatistic& s : plain_) putStatistic(bytes, s);
   putBytes(bytes, events_);
   putHistogram(bytes, surfaceDirections_);
   putHistogram(bytes, subsurfaceDirections_);
@@ -174,9 +177,10 @@ void SkinTally::appendBytes(std::string& bytes) const {
 SkinTally SkinTally::fromBytes(const TallyOptions& options, const std::string& bytes,
                                std::size_t& offset) {
   SkinTally t(options);
-  for (RunningStatistic& s : t.plain_) s = takeStatistic(bytes, offset);
   if (take<std::uint8_t>(bytes, offset) != 0)
     t.controlled_ = ControlledMeans::fromBytes(kQuantities, bytes, offset);
+  else
+    for (RunningStatistic& s : t.plain_) s = takeStatistic(bytes, offset);
   t.events_ = take<std::uint64_t>(bytes, offset);
   takeHistogram(bytes, offset, t.surfaceDirections_);
   takeHistogram(bytes, offset, t.subsurfaceDirections_);

@@ -100,14 +100,13 @@ TEST(SpectralChunkDivision, HistogramsTravelAndMergeExactly) {
               whole[i].radialExits()->estimate(bin).mean);
   }
   // 24 direction bins + 2 (under/overflow) per histogram, three of them, and a radial one of 12:
-  // 13 statistics (7 quantities, 6 layers) × 24 bytes, a flag byte and (spectral paths carry
-  // control weights) the control-variate sums: per fold a count and the sums of U and U², per
-  // quantity and fold the sums of T, T² and T·U; the event count, then per histogram a packet
-  // count and 2 doubles per bin. About 1 kB per wavelength and chunk without histograms; an analog
-  // tally has no control-variate sums.
-  EXPECT_EQ(bytesOf(whole[0]).size(),
-            13 * 24 + 1 + 2 * 24 + 26 * 24 + 8 + 3 * (8 + 26 * 16) + (8 + 12 * 16));
-  EXPECT_EQ(bytesOf(SkinTally()).size(), 13u * 24 + 1 + 8);
+  // a flag byte, then (spectral paths carry control weights) the control-variate sums: per fold a
+  // count and the sums of U and U², per quantity (7 quantities, 6 layers) and fold the sums of T,
+  // T² and T·U; the event count, then per histogram a packet count and 2 doubles per bin: 681
+  // bytes per wavelength and chunk without histograms. An analog tally has 13 plain statistics
+  // (count, sum, sum of squares) instead of the control-variate sums.
+  EXPECT_EQ(bytesOf(whole[0]).size(), 1 + 2 * 24 + 26 * 24 + 8 + 3 * (8 + 26 * 16) + (8 + 12 * 16));
+  EXPECT_EQ(bytesOf(SkinTally()).size(), 1 + 13u * 24 + 8);
 }
 
 TEST(SpectralChunkDivision, BadPartsAndShortBytesAreRefused) {
