@@ -12,13 +12,18 @@
 #          785–1395 nm (the ramp) and 1400–2500 nm (θo = 0). No bundle crosses them, so the three
 #          runs give the full curve's numbers to the last digit and together cost what it costs;
 #          each wavelength pays for the bundles that serve it instead of an equal share of all.
+# The per-wavelength walks run PW_RAYS rays (default 4 × RAYS): t·σ² does not depend on the number
+# of rays, and a longer run times it more precisely (a 10⁵-ray run at 1400 nm takes 0.3 CPU-s,
+# near the 10 ms resolution of the timer and the noise of the process's fixed cost); the CSV's
+# pw_cpu_s is scaled to RAYS rays, pw_r and pw_stderr are those of the PW_RAYS run.
 # Writes OUT/spectral-efficiency.csv, OUT/spectral-efficiency.png and OUT/spectral-efficiency.md.
-# usage: bench/spectral-efficiency.sh [BUILD_DIR] [OUT_DIR] [RAYS] [STEP]
+# usage: bench/spectral-efficiency.sh [BUILD_DIR] [OUT_DIR] [RAYS] [STEP] [PW_RAYS]
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 out="${2:-$root/docs/benchmarks}"
 rays="${3:-100000}"
 step="${4:-50}"
+pw_rays="${5:-$((4 * rays))}"
 mkdir -p "$out"
 cpu() {  # CPU seconds (user + system) and wall seconds of a command, as "cpu wall"
   /usr/bin/time -f "%U %S %e" -o "$work/t" "$@" >/dev/null
@@ -41,19 +46,22 @@ read -r startup_cpu startup_wall < <(cpu "$build/hylios" spectrum --specimen S1 
 echo "wavelength_nm,pw_cpu_s,pw_r,pw_stderr,sp_r,sp_stderr,z,gain,range_cpu_per_wavelength_s,range_r,range_stderr,range_z,range_gain" > "$work/eff.csv"
 for ((w = 250; w <= 2500; w += step)); do
   read -r pw_cpu pw_wall < <(cpu "$build/hylios" spectrum --specimen S1 --angle 45 --wavelengths "$w" \
-    --rays "$rays" --threads 2 --epsilon 0 --estimator per-wavelength --out "$work/pw.csv")
-  pw_cpu=$(python3 -c "print(max($pw_cpu - $startup_cpu, 0.001))")
-  python3 - "$w" "$pw_cpu" "$sp_cpu" "$work/pw.csv" "$work/spectral.csv" "$work/ranges.txt" >> "$work/eff.csv" <<'PY'
+    --rays "$pw_rays" --threads 2 --epsilon 0 --estimator per-wavelength --out "$work/pw.csv")
+  pw_cpu=$(python3 -c "print(max($pw_cpu - $startup_cpu, 0.001) * $rays / $pw_rays)")  # at RAYS rays
+  python3 - "$w" "$pw_cpu" "$sp_cpu" "$work/pw.csv" "$work/spectral.csv" "$work/ranges.txt" "$rays" "$pw_rays" >> "$work/eff.csv" <<'PY'
 import csv, math, sys
-w, pw_cpu, sp_cpu, pw_path, sp_path, ranges_path = (float(sys.argv[1]), float(sys.argv[2]),
-                                                    float(sys.argv[3]), *sys.argv[4:])
+w, pw_cpu, sp_cpu = (float(x) for x in sys.argv[1:4])
+pw_path, sp_path, ranges_path = sys.argv[4:7]
+rays, pw_rays = (float(x) for x in sys.argv[7:9])
 def row_at(rows):
     return next(r for r in rows if abs(float(r["wavelength_nm"]) - w) < 1e-9)
 def gain(t_sp, rows):
     sp = row_at(rows)
     b, sb = float(sp["reflectance"]), float(sp["reflectance_stderr"])
     z = (b - a) / math.hypot(sa, sb)
-    return b, sb, z, (pw_cpu * sa * sa) / (t_sp * sb * sb) if sb > 0 else float("inf")
+    # t·σ² of the per-wavelength walk at RAYS rays: its time scaled to RAYS, its variance to RAYS.
+    pw_product = pw_cpu * sa * sa * pw_rays / rays
+    return b, sb, z, pw_product / (t_sp * sb * sb) if sb > 0 else float("inf")
 pw = next(csv.DictReader(open(pw_path)))
 a, sa = float(pw["reflectance"]), float(pw["reflectance_stderr"])
 curve = list(csv.DictReader(open(sp_path)))
@@ -84,9 +92,10 @@ plot "$out/spectral-efficiency.csv" every ::1 using 1:8 with linespoints lw 2 pt
   "" every ::1 using 1:13 with linespoints lw 2 pt 5 title "gain, time of the wavelength's θo range", \\
   20 with lines dt 2 lc rgb "black" title "20×"
 GP
-python3 - "$out" "$sp_cpu" "$sp_wall" "$rays" "$work/ranges.txt" <<'PY'
+python3 - "$out" "$sp_cpu" "$sp_wall" "$rays" "$work/ranges.txt" "$pw_rays" <<'PY'
 import csv, sys
 out, sp_cpu, sp_wall, rays, ranges_path = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), sys.argv[4], sys.argv[5]
+pw_rays = sys.argv[6]
 rows = list(csv.DictReader(open(out + "/spectral-efficiency.csv")))
 curve = list(csv.DictReader(open(out + "/spectral-curve.csv")))
 worst = max(curve, key=lambda r: float(r["reflectance_stderr"]))
@@ -100,8 +109,8 @@ range_cpu = sum(float(r[1]) for r in ranges)
 with open(out + "/spectral-efficiency.md", "w") as f:
     f.write(f"Full S1 curve (451 wavelengths, {rays} rays each, 45°), spectral estimator, cold: "
             f"{sp_wall:.2f} s wall, {sp_cpu:.2f} CPU-s; largest standard error {float(worst['reflectance_stderr']):.4g} "
-            f"at {worst['wavelength_nm']} nm. The per-wavelength walk at {len(rows)} of the wavelengths, scaled to 451: "
-            f"{pw_total:.0f} CPU-s. Efficiency gain per wavelength, the curve's time shared equally: {spread('gain')}; "
+            f"at {worst['wavelength_nm']} nm. The per-wavelength walk at {len(rows)} of the wavelengths ({pw_rays} rays "
+            f"each, its R ± σ below; its time at {rays} rays), scaled to 451: {pw_total:.0f} CPU-s. Efficiency gain per wavelength, the curve's time shared equally: {spread('gain')}; "
             f"each wavelength charged its θo range's time ("
             + ", ".join(f"{r[0]} {float(r[1]):.2f} CPU-s" for r in ranges)
             + f"; {range_cpu:.2f} CPU-s together): {spread('range_gain')}. Largest |z| between the two "
