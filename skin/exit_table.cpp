@@ -263,6 +263,8 @@ ExitTable::PathCells ExitTable::cellsOf(const SpectralPath& path) const {
 
 void ExitTable::tally(Bin& bin, const SpectralPath& path, std::size_t member,
                       const PathCells& cells) const {
+  if (path.split)  // one exit per path here (WalkOptions::splitFirstRayleigh is for curves)
+    throw std::logic_error("ExitTable: a spectral path split at a Rayleigh event");
   ++bin.rays;
   const double exit = path.exitWeight[member];
   switch (path.end) {

@@ -68,6 +68,10 @@ struct WalkOptions {
   /// surface, score that reflection for every λ at once (SpectralPath::surfaceWeight, expected
   /// value) and force the path through the facet instead of drawing the Fresnel choice.
   bool splitEntryReflection = false;
+  /// Spectral walk only (scalar curves): split a path at its first Rayleigh event into a forward
+  /// and a backward branch of weight ½ each (SpectralPath::backward). Exact, since the Rayleigh
+  /// phase function is even in cos θ.
+  bool splitFirstRayleigh = false;
 };
 
 /// Distance travelled in each layer by one ray (cm), indexed by index(Layer); filled on request

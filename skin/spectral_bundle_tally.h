@@ -8,6 +8,8 @@
 // path is recorded by a few vectorised loops over the wavelengths, instead of one SkinTally::record
 // per wavelength; tallies() gives exactly the tallies the per-wavelength records would have made
 // (the same sums in the same order). With histograms every wavelength keeps its own SkinTally.
+// A path split at a Rayleigh event (SpectralPath::split) is one sample: its branches' scores and
+// control weights are added (scalar tallies only).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -33,13 +35,17 @@ class SpectralBundleTally {
  private:
   void recordEach(const SpectralPath& path, std::uint64_t ray);
   void recordSums(const SpectralPath& path, std::uint64_t ray);
+  /// Quantity k's scores (SkinTally::Quantity) of one path or branch, in its arrays or `scratch`;
+  /// null when they are 0 at every wavelength.
+  const double* scoresOf(const SpectralPath& path, std::size_t k, double* scratch) const;
 
   TallyOptions options_;
   std::size_t wavelengths_;
   std::vector<SkinTally> each_;               ///< with histograms
   std::optional<ControlledMeansArray> sums_;  ///< without
   std::uint64_t events_ = 0;
-  std::vector<double> control_, score_;  ///< per wavelength: U and one quantity's scores
+  /// Per wavelength: U, one quantity's scores, and those of a split path's backward branch.
+  std::vector<double> control_, score_, backwardScore_;
 };
 
 }  // namespace hylios::skin

@@ -34,6 +34,7 @@ SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
   // variance at a bundle's edges (docs/benchmarks.md, session 21).
   spectral.bundles.maxRayleighSpread = 0.8;
   spectral.bundles.maxLogAngleSpread = 0.3;
+  spectral.splitRayleighWithoutDeflection = run.tally.polarBins == 0 && run.tally.radialBins == 0;
   return spectral;
 }
 
@@ -70,7 +71,10 @@ SpectralChunks simulateSkinSpectralChunks(const std::vector<SkinOptics>& optics,
       members.push_back(optics[i]);
       wavelengths.push_back(optics[i].wavelengthNm);
     }
-    walks.emplace_back(members, options.walk);
+    WalkOptions walk = options.walk;  // bundles never mix θo = 0 and θo > 0
+    if (options.splitRayleighWithoutDeflection && members.front().meanScatteringAngleRad == 0)
+      walk.splitFirstRayleigh = true;
+    walks.emplace_back(members, walk);
     streams.push_back(bundleStream(wavelengths));
     for (std::uint64_t first = 0; first < options.rays; first += kPathsPerChunk)
       chunks.push_back({b, first, std::min(options.rays, first + kPathsPerChunk)});

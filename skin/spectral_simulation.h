@@ -19,13 +19,20 @@ struct SpectralRunOptions {
   WalkOptions walk;
   TallyOptions tally;
   BundleRule bundles;
+  /// WalkOptions::splitFirstRayleigh in the bundles where Algorithm 2's θo is 0 (≥ 1400 nm):
+  /// there a path's course after the event is a few straight flights, and the split halves the
+  /// variance of the water bands for 1.3× the time; where θo > 0 the course goes on through tens
+  /// of melanosome deflections and the split doubles the time for the same halving (docs/
+  /// benchmarks.md, session 22). Needs tallies without histograms.
+  bool splitRayleighWithoutDeflection = false;
 };
 
 /// The spectral estimator as the commands and the Python module run it (spectrum, brdf, the
 /// profiles): run's incidence, rays, seed, walk and tally, with each melanosome's internal path
 /// drawn from the path-length table, the surface reflection at entry scored as an expected
-/// value, and bundles bounded to a Rayleigh spread of 0.8 and a θo spread of 0.3
-/// (skin/spectral_bundle.h).
+/// value, bundles bounded to a Rayleigh spread of 0.8 and a θo spread of 0.3
+/// (skin/spectral_bundle.h), and, without histograms, paths split at their first Rayleigh event
+/// where θo = 0 (SpectralRunOptions::splitRayleighWithoutDeflection).
 SpectralRunOptions commandSpectralRun(const WalkRunOptions& run);
 
 /// The random stream of a bundle: a mix of its wavelengths' streams (skin_simulation.h).

@@ -65,9 +65,41 @@ class SpectralWalk::State {
     path.absorbedInMelanosomes.assign(layers ? kLayerCount * n : 0, 0.0);
     path.transmittedDirection.clear();
     path.surfaceWeight.clear();
+    path.split = false;
+    path.splitAtEvent = 0;
     stays.clear();
     logDensity.assign(n, 0.0);
     proposalOffset.assign(n, 0.0);
+  }
+  /// The state of `other`'s path so far, continued into `p` (a branch: p's weights zero, no
+  /// surface weight of its own, the stays and densities so far copied).
+  State(SpectralPath& p, const State& other)
+      : State(p, other.logDensity.size(), !other.path.absorbed.empty()) {
+    p.events = other.path.events;
+    p.exitOffsetXCm = other.path.exitOffsetXCm;
+    p.exitOffsetYCm = other.path.exitOffsetYCm;
+    stays = other.stays;
+    position = other.position;
+    direction = other.direction;
+    slab = other.slab;
+    hero = other.hero;
+    rayleighAvailable = other.rayleighAvailable;
+    roulette = other.roulette;
+    branchWeight = other.branchWeight;
+    stayCm = other.stayCm;
+    stayMelaninCm = other.stayMelaninCm;
+    pathCm = other.pathCm;
+    melaninCm = other.melaninCm;
+    leastDepth = other.leastDepth;
+    rouletteDepthBound = other.rouletteDepthBound;
+    angleCount = other.angleCount;
+    angleSumRad = other.angleSumRad;
+    rayleighCm = other.rayleighCm;
+    rayleighEvents = other.rayleighEvents;
+    pendingIndex = other.pendingIndex;
+    pendingCount = other.pendingCount;
+    logDensity = other.logDensity;
+    proposalOffset = other.proposalOffset;
   }
   SpectralPath& path;
   std::vector<double>& ratio;              ///< scratch for MIS ratios
@@ -78,6 +110,7 @@ class SpectralWalk::State {
   std::size_t hero = 0;
   bool rayleighAvailable = true;
   double roulette = 1;                          ///< product of 1/P over the roulettes survived
+  double branchWeight = 1;                      ///< ½ in each branch of a split path
   double stayCm = 0, stayMelaninCm = 0;         ///< path in the current slab since the stay began
   std::array<double, kLayerCount> pathCm{};     ///< by slab: path travelled there (λ-free)
   std::array<double, kLayerCount> melaninCm{};  ///< by slab: path inside melanin (λ-free)
@@ -206,6 +239,8 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
   }
   smallestSurfaceIndex_ = *std::min_element(surfaceIndex_.begin(), surfaceIndex_.end());
   surfaceGroups_ = SurfaceIndexGroups(surfaceIndex_);
+  for (const Slab& slab : slabs_) splitsRayleigh_ = splitsRayleigh_ || slab.hasRayleigh;
+  splitsRayleigh_ = splitsRayleigh_ && options.splitFirstRayleigh;
   leastMelaninMuA_perCm_ = *std::min_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
   largestMelaninMuA_perCm_ = *std::max_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
   requireShared(options.roughSurface || !surfaceIndicesDiffer_,
@@ -461,6 +496,21 @@ void SpectralWalk::settleDensities(State& s) const {
   }
 }
 
+void SpectralWalk::splitAtRayleigh(State& s, double cosR, double sinR, const Azimuth& phi,
+                                   Rng& rng) const {
+  // E f(cos) = ½ E f(|cos|) + ½ E f(−|cos|) for the even Rayleigh law, whatever f: each branch
+  // continues with the folded cosine's hemisphere, weight ½ (in its MIS ratio, SpectralWalk::
+  // finish). The λ-dependent densities (where the event happened) are shared and already booked.
+  SpectralPath& path = s.path;
+  if (path.backward.empty()) path.backward.emplace_back();
+  s.branchWeight = 0.5;
+  State backward(path.backward.front(), s);
+  backward.direction = directionAbout(s.direction, -std::fabs(cosR), sinR, phi.cosPhi, phi.sinPhi);
+  path.split = true;
+  path.splitAtEvent = path.events;
+  traceEntered(backward, rng);
+}
+
 void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
   endStay(s);
   settleDensities(s);
@@ -471,6 +521,8 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
   std::vector<double>& ratio = s.ratio;
   s.misRatios(ratio);
   const std::size_t n = wavelengthCount_;
+  if (s.branchWeight != 1.0)
+    for (std::size_t i = 0; i < n; ++i) ratio[i] *= s.branchWeight;
   std::array<spectral_weights::SlabAbsorption, kLayerCount> slabs{};
   for (std::size_t k = 0; k < slabs_.size(); ++k)
     slabs[k] = {slabs_[k].muA_perCm.data(), index(slabs_[k].layer), slabs_[k].largestMuA_perCm};
@@ -530,11 +582,15 @@ void SpectralWalk::traceEntered(State& s, Rng& rng) const {
         meetMelanosomes(s, s.slab, rng);
         continue;
       }
-      const double cosR = sampleRayleighCos(rng.uniform());  // Algorithm 1's density
+      double cosR = sampleRayleighCos(rng.uniform());  // Algorithm 1's density
       const double sinR = std::sqrt((1.0 - cosR) * (1.0 + cosR));
       const Azimuth phi = sampleAzimuth(rng);
-      d = directionAbout(d, cosR, sinR, phi.cosPhi, phi.sinPhi);
       s.rayleighAvailable = false;
+      if (splitsRayleigh_ && s.branchWeight == 1.0) {  // the path's first Rayleigh event
+        splitAtRayleigh(s, cosR, sinR, phi, rng);
+        cosR = std::fabs(cosR);
+      }
+      d = directionAbout(d, cosR, sinR, phi.cosPhi, phi.sinPhi);
       continue;
     }
     s.position.z = d.z > 0 ? slab.bottomCm : slab.topCm;

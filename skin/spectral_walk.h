@@ -25,6 +25,8 @@
 // The ratio's expectation is exactly 1, so the tallies subtract its fluctuation as a control
 // variate (skin/core/controlled_means.h, SkinTally).
 // Russian roulette on the largest weight (checked at layer boundaries) ends paths unbiasedly.
+// WalkOptions::splitFirstRayleigh splits a path at its first Rayleigh event into a forward and a
+// backward branch of weight ½ (the phase function is even in cos θ): SpectralPath::backward.
 // Degenerate ratios (a delta whose position depends on λ: the redraw cap's macro normal with
 // different indices) give weight 0 to every λ whose delta lies elsewhere, which is still exact.
 // Bundles that would make the ratios wide (θo = 0 against θo > 0, very different Rayleigh depths)
@@ -81,6 +83,14 @@ struct SpectralPath {
   /// The same places: the part of `absorbed` taken by melanin inside melanosomes (each stay's loss
   /// shared by optical depth).
   std::vector<double> absorbedInMelanosomes;
+
+  /// A path split at its first Rayleigh event (WalkOptions::splitFirstRayleigh): this path
+  /// holds the forward branch, backward[0] the backward one, each scored with weight ½ (its
+  /// weights above already include the ½; its surfaceWeight is empty: the entry's is this
+  /// path's). splitAtEvent: the events both branches share (counted in each one's `events`).
+  bool split = false;
+  std::uint32_t splitAtEvent = 0;
+  std::vector<SpectralPath> backward;  ///< holds one path when split (kept for reuse)
 
   /// The walk's workspace (kept to avoid allocations per path).
   struct Stay {
@@ -204,7 +214,11 @@ class SpectralWalk {
   void endStay(State& s) const;
   /// Russian roulette on the largest weight; false when the path was ended.
   bool survivesRoulette(State& s, Rng& rng) const;
-  /// Ends the path: `end`, scores = roulette × transmittance × MIS ratio (0 when `scores` false).
+  /// Splits s at its first Rayleigh event (scattering cosine ±|cosR|, azimuth phi): traces the
+  /// backward branch into s.path.backward[0] to its end, and leaves s as the forward branch.
+  void splitAtRayleigh(State& s, double cosR, double sinR, const Azimuth& phi, Rng& rng) const;
+  /// Ends the path: `end`, scores = roulette × transmittance × MIS ratio × the branch's weight
+  /// (0 when `scores` false).
   void finish(State& s, PathEnd end, bool scores) const;
   /// Adds the densities deferred in s (State::angleCount and the Rayleigh sums) to s.logDensity.
   void settleDensities(State& s) const;
@@ -228,6 +242,7 @@ class SpectralWalk {
   SurfaceIndexGroups surfaceGroups_;  ///< surfaceIndex_'s distinct values
   std::vector<double> bottomIndex_;   ///< per λ: the deepest layer's index
   bool surfaceIndicesDiffer_ = false;
+  bool splitsRayleigh_ = false;  ///< paths split at their first Rayleigh event
   double smallestSurfaceIndex_ = 1;
   std::optional<SurfaceNormalPolarSampler> facetPolar_;
   double aspectSquared_ = 1;

@@ -228,6 +228,8 @@ SkinScatter SkinMaterial::scatterSpectral(const SurfaceHit& hit, const glm::dvec
         incident, rng, path, split, exitSample, firstFacet);
   else
     walk.trace(incident, rng, path, split, firstFacet);
+  if (path.split)  // one exit per path here (WalkOptions::splitFirstRayleigh is for curves)
+    throw std::logic_error("skin material: a spectral path split at a Rayleigh event");
   for (std::size_t i = 0; i < walk.size(); ++i) weights[i] = path.exitWeight[i];
   SkinScatter out = exitOf(hit, direction, normals, frame, path.end, path.exitDirection,
                            path.exitOffsetXCm, path.exitOffsetYCm, geometry, materialOfShape);

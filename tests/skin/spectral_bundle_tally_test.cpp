@@ -1,7 +1,8 @@
 // SpectralBundleTally (skin/spectral_bundle_tally.h): without histograms its tallies are bit for
 // bit those of one SkinTally::record per wavelength (the record it replaces), for paths of every
-// end, with and without a split entry and layer absorption; with histograms it keeps per-wavelength
-// tallies; mismatched paths and SkinTally::fromControlledMeans' misuse are errors.
+// end, with and without a split entry and layer absorption; a path split at a Rayleigh event is
+// one sample of its branches' sums; with histograms it keeps per-wavelength tallies; mismatched
+// or split paths where they cannot go and SkinTally::fromControlledMeans' misuse are errors.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -91,6 +92,61 @@ TEST(SpectralBundleTally, SumsAreThoseOfOneRecordPerWavelength) {
     }
 }
 
+TEST(SpectralBundleTally, ASplitPathIsOneSampleOfItsBranchesSum) {
+  // A path split at a Rayleigh event: per quantity the forward and backward branches' scores
+  // add up, and so do their control weights (the entry's surface weight counted once).
+  constexpr std::size_t kWavelengths = 5;
+  const PathEnd ends[] = {PathEnd::SubsurfaceReflection, PathEnd::Absorbed, PathEnd::EventLimit};
+  SpectralBundleTally bundle(kWavelengths, TallyOptions{});
+  std::vector<SkinTally> each(kWavelengths, SkinTally(TallyOptions{}));
+  Rng rng(6, 2, 0);
+  for (std::uint64_t ray = 0; ray < 300; ++ray) {
+    SpectralPath path = randomPath(kWavelengths, ends[ray % 3], true, true, rng);
+    if (ray % 2 == 0) {
+      path.split = true;
+      path.splitAtEvent = path.events / 2;
+      path.backward.push_back(randomPath(kWavelengths, ends[(ray / 2) % 3], false, true, rng));
+    }
+    bundle.record(path, ray);
+    for (std::size_t i = 0; i < kWavelengths; ++i) {
+      const SpectralPath* branches[2] = {&path, path.split ? &path.backward.front() : nullptr};
+      double scores[SkinTally::kQuantities] = {};
+      double control = path.surfaceWeight[i];
+      for (const SpectralPath* b : branches) {
+        if (!b) continue;
+        const double w = b->exitWeight[i], sw = b == &path ? path.surfaceWeight[i] : 0.0;
+        const bool surface = b->end == PathEnd::SurfaceReflection;
+        const bool subsurface = b->end == PathEnd::SubsurfaceReflection;
+        scores[SkinTally::kTotal] += (surface || subsurface ? w : 0.0) + sw;
+        scores[SkinTally::kSurface] += (surface ? w : 0.0) + sw;
+        scores[SkinTally::kSubsurface] += subsurface ? w : 0.0;
+        scores[SkinTally::kTransmitted] += b->end == PathEnd::Transmitted ? w : 0.0;
+        scores[SkinTally::kEventLimited] += b->end == PathEnd::EventLimit ? w : 0.0;
+        scores[SkinTally::kAbsorbed] += b->absorbedTotal[i];
+        for (std::size_t l = 0; l < kLayerCount; ++l) {
+          scores[SkinTally::kFirstLayer + l] += b->absorbed[l * kWavelengths + i];
+          scores[SkinTally::kMelanosome] += b->absorbedInMelanosomes[l * kWavelengths + i];
+        }
+        control += b->absorbedTotal[i] + w;
+      }
+      ControlledMeans one(SkinTally::kQuantities);  // the path as one sample of its sums
+      one.add(scores, control, static_cast<unsigned>(ray & 1));
+      each[i].merge(SkinTally::fromControlledMeans(TallyOptions{}, one, 0));
+    }
+  }
+  const std::vector<SkinTally> tallies = bundle.tallies();
+  for (std::size_t i = 0; i < kWavelengths; ++i) {
+    EXPECT_EQ(tallies[i].rays(), 300u);
+    for (auto estimate : {&SkinTally::reflectance, &SkinTally::subsurfaceReflectance,
+                          &SkinTally::absorptance, &SkinTally::eventLimited}) {
+      EXPECT_NEAR(((tallies[i]).*estimate)().mean, ((each[i]).*estimate)().mean, 1e-12) << i;
+      EXPECT_NEAR(((tallies[i]).*estimate)().standardError, ((each[i]).*estimate)().standardError,
+                  1e-12)
+          << i;
+    }
+  }
+}
+
 TEST(SpectralBundleTally, HistogramsKeepATallyPerWavelength) {
   TallyOptions options;
   options.polarBins = 3;
@@ -129,8 +185,14 @@ TEST(SpectralBundleTally, MismatchedPathsAndSumsAreErrors) {
   SpectralPath lopsided = randomPath(3, PathEnd::SurfaceReflection, true, true, rng);
   lopsided.absorbedInMelanosomes.pop_back();
   EXPECT_THROW(bundle.record(lopsided, 0), std::invalid_argument);
+  SpectralPath split = randomPath(3, PathEnd::SubsurfaceReflection, true, true, rng);
+  split.split = true;  // without its branch
+  EXPECT_THROW(bundle.record(split, 0), std::invalid_argument);
   TallyOptions radial;
   radial.radialBins = 4;
+  SpectralBundleTally withHistograms(3, radial);
+  split.backward.push_back(randomPath(3, PathEnd::Absorbed, false, true, rng));
+  EXPECT_THROW(withHistograms.record(split, 0), std::logic_error);
   EXPECT_THROW(SkinTally::fromControlledMeans(radial, ControlledMeans(SkinTally::kQuantities), 0),
                std::invalid_argument);
   EXPECT_THROW(SkinTally::fromControlledMeans(TallyOptions{}, ControlledMeans(2), 0),
