@@ -125,6 +125,7 @@ std::vector<skin::Estimate> modelReflectanceCurve(const skin::Specimen& specimen
   run.rays = rays;
   run.seed = seed;
   run.walk.layerAbsorption = false;
+  run.splitRayleighWithoutDeflection = true;  // a scalar curve (skin/spectral_simulation.h)
   std::vector<skin::Estimate> curve;
   for (const auto& t : skin::simulateSkinSpectral(optics, run)) curve.push_back(t.reflectance());
   return curve;

@@ -170,6 +170,7 @@ std::vector<Estimate> modelReflectance(const Specimen& specimen, const SpectralD
   run.rays = options.rays;
   run.seed = options.seed;
   run.walk = options.walk;
+  run.splitRayleighWithoutDeflection = true;  // a scalar curve (skin/spectral_simulation.h)
   const std::vector<SkinTally> tallies = simulateSkinSpectral(optics, run);
   std::vector<Estimate> r;
   r.reserve(tallies.size());
