@@ -32,23 +32,45 @@ cpu() {  # CPU seconds (user + system) and wall seconds of a command, as "cpu wa
 spectral() {  # CPU and wall seconds of the spectral estimator over wavelengths $1, CSV to $2
   cpu "$build/hylios" spectrum --specimen S1 --angle 45 --wavelengths "$1" --rays "$rays" --threads 2 --out "$2"
 }
-read -r sp_cpu sp_wall < <(spectral 250:2500:5 "$work/spectral.csv")
+# The spectral runs (the full curve and the three range runs) are timed three times, before, in
+# the middle of and after the per-wavelength runs, and each takes its median: this machine's speed
+# drifts by up to 30 % over a minute, and a single timing at the start set every gain by it.
 ranges=(250:780:5 785:1395:5 1400:2500:5)
-: > "$work/ranges.txt"
-for r in "${ranges[@]}"; do
-  read -r r_cpu r_wall < <(spectral "$r" "$work/range_${r//:/_}.csv")
-  echo "$r $r_cpu $r_wall $work/range_${r//:/_}.csv" >> "$work/ranges.txt"
-done
+spectral_block() {  # appends "cpu wall" of the full curve and of each range run to their files
+  spectral 250:2500:5 "$work/spectral.csv" >> "$work/full_times.txt"
+  for r in "${ranges[@]}"; do
+    spectral "$r" "$work/range_${r//:/_}.csv" >> "$work/range_times_${r//:/_}.txt"
+  done
+}
+median_of() {  # the median "cpu wall" line of a file of three, by CPU
+  sort -g "$1" | sed -n 2p
+}
+: > "$work/full_times.txt"
+for r in "${ranges[@]}"; do : > "$work/range_times_${r//:/_}.txt"; done
+spectral_block
 # The fixed cost of a process (loading the spectral data, specimen, optics): subtracted from each
 # per-wavelength run, which the real per-wavelength curve pays once, not 451 times.
 read -r startup_cpu startup_wall < <(cpu "$build/hylios" spectrum --specimen S1 --angle 45 --wavelengths 550 \
   --rays 1 --threads 2 --epsilon 0 --estimator per-wavelength --out "$work/startup.csv")
-echo "wavelength_nm,pw_cpu_s,pw_r,pw_stderr,sp_r,sp_stderr,z,gain,range_cpu_per_wavelength_s,range_r,range_stderr,range_z,range_gain" > "$work/eff.csv"
+: > "$work/pw_times.txt"
+middle=$(( (250 + 2500) / 2 ))
 for ((w = 250; w <= 2500; w += step)); do
   read -r pw_cpu pw_wall < <(cpu "$build/hylios" spectrum --specimen S1 --angle 45 --wavelengths "$w" \
-    --rays "$pw_rays" --threads 2 --epsilon 0 --estimator per-wavelength --out "$work/pw.csv")
+    --rays "$pw_rays" --threads 2 --epsilon 0 --estimator per-wavelength --out "$work/pw_$w.csv")
   pw_cpu=$(python3 -c "print(max($pw_cpu - $startup_cpu, 0.001) * $rays / $pw_rays)")  # at RAYS rays
-  python3 - "$w" "$pw_cpu" "$sp_cpu" "$work/pw.csv" "$work/spectral.csv" "$work/ranges.txt" "$rays" "$pw_rays" >> "$work/eff.csv" <<'PY'
+  echo "$w $pw_cpu" >> "$work/pw_times.txt"
+  if (( w < middle && w + step >= middle )); then spectral_block; fi
+done
+spectral_block
+read -r sp_cpu sp_wall < <(median_of "$work/full_times.txt")
+: > "$work/ranges.txt"
+for r in "${ranges[@]}"; do
+  read -r r_cpu r_wall < <(median_of "$work/range_times_${r//:/_}.txt")
+  echo "$r $r_cpu $r_wall $work/range_${r//:/_}.csv" >> "$work/ranges.txt"
+done
+echo "wavelength_nm,pw_cpu_s,pw_r,pw_stderr,sp_r,sp_stderr,z,gain,range_cpu_per_wavelength_s,range_r,range_stderr,range_z,range_gain" > "$work/eff.csv"
+while read -r w pw_cpu; do
+  python3 - "$w" "$pw_cpu" "$sp_cpu" "$work/pw_$w.csv" "$work/spectral.csv" "$work/ranges.txt" "$rays" "$pw_rays" >> "$work/eff.csv" <<'PY'
 import csv, math, sys
 w, pw_cpu, sp_cpu = (float(x) for x in sys.argv[1:4])
 pw_path, sp_path, ranges_path = sys.argv[4:7]
@@ -76,7 +98,7 @@ for line in open(ranges_path):
 print(f"{w:g},{pw_cpu:.3f},{a:.6g},{sa:.6g},{b:.6g},{sb:.6g},{z:.3f},{g:.4g},"
       f"{t_range:.5f},{rb:.6g},{rsb:.6g},{rz:.3f},{rg:.4g}")
 PY
-done
+done < "$work/pw_times.txt"
 cp "$work/eff.csv" "$out/spectral-efficiency.csv"
 cp "$work/spectral.csv" "$out/spectral-curve.csv"
 gnuplot <<GP
@@ -108,7 +130,7 @@ ranges = [line.split()[:3] for line in open(ranges_path)]
 range_cpu = sum(float(r[1]) for r in ranges)
 with open(out + "/spectral-efficiency.md", "w") as f:
     f.write(f"Full S1 curve (451 wavelengths, {rays} rays each, 45°), spectral estimator, cold: "
-            f"{sp_wall:.2f} s wall, {sp_cpu:.2f} CPU-s; largest standard error {float(worst['reflectance_stderr']):.4g} "
+            f"{sp_wall:.2f} s wall, {sp_cpu:.2f} CPU-s (the median of three runs, as each range's below); largest standard error {float(worst['reflectance_stderr']):.4g} "
             f"at {worst['wavelength_nm']} nm. The per-wavelength walk at {len(rows)} of the wavelengths ({pw_rays} rays "
             f"each, its R ± σ below; its time at {rays} rays), scaled to 451: {pw_total:.0f} CPU-s. Efficiency gain per wavelength, the curve's time shared equally: {spread('gain')}; "
             f"each wavelength charged its θo range's time ("
