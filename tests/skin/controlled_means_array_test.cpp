@@ -8,15 +8,10 @@
 
 #include "skin/core/controlled_means_array.h"
 #include "skin/core/random.h"
+#include "tests/support/state_bytes.h"
 
 namespace hylios::skin {
 namespace {
-
-std::string bytesOf(const ControlledMeans& c) {
-  std::string bytes;
-  c.appendBytes(bytes);
-  return bytes;
-}
 
 TEST(ControlledMeansArray, EachMemberIsTheControlledMeansOfItsPaths) {
   constexpr std::size_t kMembers = 7, kQuantities = 3;
@@ -46,7 +41,7 @@ TEST(ControlledMeansArray, EachMemberIsTheControlledMeansOfItsPaths) {
   for (std::size_t i = 0; i < kMembers; ++i) {
     const ControlledMeans member = array.member(i);
     EXPECT_EQ(member.count(), 500u);
-    EXPECT_EQ(bytesOf(member), bytesOf(one[i])) << "member " << i;
+    EXPECT_EQ(hylios::test::stateBytes(member), hylios::test::stateBytes(one[i])) << "member " << i;
     for (std::size_t k = 0; k < kQuantities; ++k) {
       EXPECT_EQ(member.estimate(k).mean, one[i].estimate(k).mean);
       EXPECT_EQ(member.estimate(k).standardError, one[i].estimate(k).standardError);

@@ -10,15 +10,10 @@
 
 #include "skin/core/random.h"
 #include "skin/spectral_bundle_tally.h"
+#include "tests/support/state_bytes.h"
 
 namespace hylios::skin {
 namespace {
-
-std::string bytesOf(const SkinTally& t) {
-  std::string bytes;
-  t.appendBytes(bytes);
-  return bytes;
-}
 
 /// A path of `n` wavelengths with random weights (some 0, absorbed = ratio − exits may be < 0).
 SpectralPath randomPath(std::size_t n, PathEnd end, bool split, bool layers, Rng& rng) {
@@ -84,7 +79,7 @@ TEST(SpectralBundleTally, SumsAreThoseOfOneRecordPerWavelength) {
         EXPECT_TRUE(tallies[i].controlled());
         EXPECT_EQ(tallies[i].rays(), 400u);
         EXPECT_EQ(tallies[i].meanEvents(), each[i].meanEvents());
-        EXPECT_EQ(bytesOf(tallies[i]), bytesOf(each[i]));
+        EXPECT_EQ(hylios::test::stateBytes(tallies[i]), hylios::test::stateBytes(each[i]));
         EXPECT_EQ(tallies[i].reflectance().mean, each[i].reflectance().mean);
         EXPECT_EQ(tallies[i].absorptance(Layer::StratumBasale).standardError,
                   each[i].absorptance(Layer::StratumBasale).standardError);
@@ -173,7 +168,7 @@ TEST(SpectralBundleTally, HistogramsKeepATallyPerWavelength) {
   const std::vector<SkinTally> tallies = bundle.tallies();
   for (std::size_t i = 0; i < 4; ++i) {
     ASSERT_TRUE(tallies[i].subsurfaceDirections().has_value());
-    EXPECT_EQ(bytesOf(tallies[i]), bytesOf(each[i]));
+    EXPECT_EQ(hylios::test::stateBytes(tallies[i]), hylios::test::stateBytes(each[i]));
   }
 }
 

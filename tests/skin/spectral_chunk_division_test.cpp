@@ -10,17 +10,11 @@
 
 #include "skin/skin_optics.h"
 #include "skin/spectral_simulation.h"
+#include "tests/support/state_bytes.h"
 #include "tests/support/test_spectra.h"
 
 namespace hylios::skin {
 namespace {
-
-/// The tally's state as bytes: equal bytes mean equal sums, counts and histograms.
-std::string bytesOf(const SkinTally& t) {
-  std::string bytes;
-  t.appendBytes(bytes);
-  return bytes;
-}
 
 std::vector<SkinOptics> opticsAt(const char* name, const std::vector<double>& wavelengths) {
   const Specimen specimen = loadSpecimen(name, test::specimenDir());
@@ -76,7 +70,8 @@ TEST(SpectralChunkDivision, AnyNumberOfPartsGivesTheUndividedTalliesBitForBit) {
     const std::vector<SkinTally> divided = dividedRun(optics, options, parts);
     ASSERT_EQ(divided.size(), whole.size());
     for (std::size_t i = 0; i < whole.size(); ++i) {
-      EXPECT_EQ(bytesOf(divided[i]), bytesOf(whole[i])) << parts << " parts, wavelength " << i;
+      EXPECT_EQ(hylios::test::stateBytes(divided[i]), hylios::test::stateBytes(whole[i]))
+          << parts << " parts, wavelength " << i;
       EXPECT_EQ(divided[i].rays(), 2500u);
     }
   }
@@ -93,7 +88,7 @@ TEST(SpectralChunkDivision, HistogramsTravelAndMergeExactly) {
   const std::vector<SkinTally> whole = simulateSkinSpectral(optics, options);
   const std::vector<SkinTally> divided = dividedRun(optics, options, 2);
   for (std::size_t i = 0; i < whole.size(); ++i) {
-    EXPECT_EQ(bytesOf(divided[i]), bytesOf(whole[i]));
+    EXPECT_EQ(hylios::test::stateBytes(divided[i]), hylios::test::stateBytes(whole[i]));
     ASSERT_TRUE(divided[i].radialExits().has_value());
     const std::size_t bin = 2;
     EXPECT_EQ(divided[i].radialExits()->estimate(bin).mean,
@@ -105,8 +100,9 @@ TEST(SpectralChunkDivision, HistogramsTravelAndMergeExactly) {
   // T² and T·U; the event count, then per histogram a packet count and 2 doubles per bin: 681
   // bytes per wavelength and chunk without histograms. An analog tally has 13 plain statistics
   // (count, sum, sum of squares) instead of the control-variate sums.
-  EXPECT_EQ(bytesOf(whole[0]).size(), 1 + 2 * 24 + 26 * 24 + 8 + 3 * (8 + 26 * 16) + (8 + 12 * 16));
-  EXPECT_EQ(bytesOf(SkinTally()).size(), 1 + 13u * 24 + 8);
+  EXPECT_EQ(hylios::test::stateBytes(whole[0]).size(),
+            1 + 2 * 24 + 26 * 24 + 8 + 3 * (8 + 26 * 16) + (8 + 12 * 16));
+  EXPECT_EQ(hylios::test::stateBytes(SkinTally()).size(), 1 + 13u * 24 + 8);
 }
 
 TEST(SpectralChunkDivision, BadPartsAndShortBytesAreRefused) {
@@ -115,7 +111,7 @@ TEST(SpectralChunkDivision, BadPartsAndShortBytesAreRefused) {
   EXPECT_THROW(simulateSkinSpectralChunks(optics, run(100, {}), 0, 0), std::invalid_argument);
   const SpectralChunks half = simulateSkinSpectralChunks(optics, run(3000, {}), 0, 2);
   EXPECT_THROW(mergeSpectralChunks(half, 1, {}), std::invalid_argument);  // chunk 1 not run
-  std::string bytes = bytesOf(half.tallies[0][0]);
+  std::string bytes = hylios::test::stateBytes(half.tallies[0][0]);
   bytes.pop_back();
   std::size_t offset = 0;
   EXPECT_THROW(SkinTally::fromBytes({}, bytes, offset), std::invalid_argument);
