@@ -53,57 +53,9 @@ double logAngleNormalisation(double meanAngleRad) {
 }
 
 std::string layerText(Layer layer) { return std::string(layerName(layer)); }
-}  // namespace
-
-/// The walk's state for one path (the per-λ arrays live in the SpectralPath, reused across paths).
-class SpectralWalk::State {
- public:
-  State(SpectralPath& p, std::size_t n, bool layers) : path(p), ratio(p.scratch), stays(p.stays) {
-    path.exitWeight.assign(n, 0.0);
-    path.absorbedTotal.assign(n, 0.0);
-    path.absorbed.assign(layers ? kLayerCount * n : 0, 0.0);
-    path.absorbedInMelanosomes.assign(layers ? kLayerCount * n : 0, 0.0);
-    path.transmittedDirection.clear();
-    path.surfaceWeight.clear();
-    path.split = false;
-    path.splitAtEvent = 0;
-    stays.clear();
-    logDensity.assign(n, 0.0);
-    proposalOffset.assign(n, 0.0);
-  }
-  /// The state of `other`'s path so far, continued into `p` (a branch: p's weights zero, no
-  /// surface weight of its own, the stays and densities so far copied).
-  State(SpectralPath& p, const State& other)
-      : State(p, other.logDensity.size(), !other.path.absorbed.empty()) {
-    p.events = other.path.events;
-    p.exitOffsetXCm = other.path.exitOffsetXCm;
-    p.exitOffsetYCm = other.path.exitOffsetYCm;
-    stays = other.stays;
-    position = other.position;
-    direction = other.direction;
-    slab = other.slab;
-    hero = other.hero;
-    rayleighAvailable = other.rayleighAvailable;
-    roulette = other.roulette;
-    branchWeight = other.branchWeight;
-    stayCm = other.stayCm;
-    stayMelaninCm = other.stayMelaninCm;
-    pathCm = other.pathCm;
-    melaninCm = other.melaninCm;
-    leastDepth = other.leastDepth;
-    rouletteDepthBound = other.rouletteDepthBound;
-    angleCount = other.angleCount;
-    angleSumRad = other.angleSumRad;
-    rayleighCm = other.rayleighCm;
-    rayleighEvents = other.rayleighEvents;
-    pendingIndex = other.pendingIndex;
-    pendingCount = other.pendingCount;
-    logDensity = other.logDensity;
-    proposalOffset = other.proposalOffset;
-  }
-  SpectralPath& path;
-  std::vector<double>& ratio;              ///< scratch for MIS ratios
-  std::vector<SpectralPath::Stay>& stays;  ///< the stays so far (per-layer absorption only)
+/// The walk's progress along one path: everything but the SpectralPath it writes, so that a path
+/// split at a Rayleigh event continues as two copies of it (SpectralWalk::splitAtRayleigh).
+struct PathProgress {
   Vec3 position{0, 0, 0};
   Vec3 direction;
   std::size_t slab = 0;
@@ -133,6 +85,30 @@ class SpectralWalk::State {
   /// Per hero j: log q_j(path) − log p_j(path), q_j the density with which hero j proposed the
   /// path (0 except after a forced transmission, where q_j lacks the Fresnel factor).
   std::vector<double> proposalOffset;
+};
+}  // namespace
+
+/// The walk's state for one path (the per-λ arrays live in the SpectralPath, reused across paths).
+class SpectralWalk::State : public PathProgress {
+ public:
+  State(SpectralPath& p, std::size_t n, bool layers) : path(p), ratio(p.scratch), stays(p.stays) {
+    startPath(n, layers);
+    logDensity.assign(n, 0.0);
+    proposalOffset.assign(n, 0.0);
+  }
+  /// The state of `other`'s path so far, continued into `p` (a branch: p's weights zero, no
+  /// surface weight of its own, the progress and stays so far copied).
+  State(SpectralPath& p, const State& other)
+      : PathProgress(other), path(p), ratio(p.scratch), stays(p.stays) {
+    startPath(other.logDensity.size(), !other.path.absorbed.empty());
+    p.events = other.path.events;
+    p.exitOffsetXCm = other.path.exitOffsetXCm;
+    p.exitOffsetYCm = other.path.exitOffsetYCm;
+    stays = other.stays;
+  }
+  SpectralPath& path;
+  std::vector<double>& ratio;              ///< scratch for MIS ratios
+  std::vector<SpectralPath::Stay>& stays;  ///< the stays so far (per-layer absorption only)
 
   /// Per λ: p_λ / mean_j q_j (1 for a single wavelength sampled by its own law), into `out`.
   void misRatios(std::vector<double>& out) const {
@@ -149,6 +125,20 @@ class SpectralWalk::State {
     const double scale = static_cast<double>(n) / proposal;
     spectral_weights::exponentials(n, logDensity.data(), 1.0, -top, out.data());
     for (std::size_t i = 0; i < n; ++i) out[i] *= scale;
+  }
+
+ private:
+  /// The path's per-λ outcomes zeroed for n wavelengths, no split, no stays.
+  void startPath(std::size_t n, bool layers) {
+    path.exitWeight.assign(n, 0.0);
+    path.absorbedTotal.assign(n, 0.0);
+    path.absorbed.assign(layers ? kLayerCount * n : 0, 0.0);
+    path.absorbedInMelanosomes.assign(layers ? kLayerCount * n : 0, 0.0);
+    path.transmittedDirection.clear();
+    path.surfaceWeight.clear();
+    path.split = false;
+    path.splitAtEvent = 0;
+    stays.clear();
   }
 };
 
