@@ -72,6 +72,10 @@ struct WalkOptions {
   /// and a backward branch of weight ½ each (SpectralPath::backward). Exact, since the Rayleigh
   /// phase function is even in cos θ.
   bool splitFirstRayleigh = false;
+  /// Spectral walk only (scalar curves): heroes drawn in shares by the span of law each member
+  /// stands for (skin/hero_shares.h) instead of uniformly; the balance heuristic takes the same
+  /// shares, so every weight stays exact.
+  bool heroSharesByLaw = false;
 };
 
 /// Distance travelled in each layer by one ray (cm), indexed by index(Layer); filled on request

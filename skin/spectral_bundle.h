@@ -23,7 +23,9 @@
 // Rayleigh spread of 1.0, and the commands' 0.8 (commandSpectralRun) gives 0.0014, with 33
 // bundles instead of 22. Render tables keep 1.0 (one bundle fewer in the visible band). Since the
 // commands' tallies subtract the MIS ratio's fluctuation (skin/core/controlled_means.h), their
-// curves take a θo spread of 0.3: 24 bundles, the largest standard error 0.0014 (session 21).
+// curves took a θo spread of 0.3: 24 bundles, the largest standard error 0.0014 (session 21);
+// with heroes in shares by law (skin/hero_shares.h) they take 0.6 and a Rayleigh spread of 1.2:
+// 16 bundles, the same largest standard error (session 24).
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -35,8 +37,8 @@ namespace hylios::skin {
 
 struct BundleRule {
   std::size_t maxWavelengths = 64;
-  double maxLogAngleSpread = 0.15;  ///< the commands' curves use 0.3 (commandSpectralRun)
-  double maxRayleighSpread = 1.0;   ///< the commands' curves use 0.8 (commandSpectralRun)
+  double maxLogAngleSpread = 0.15;  ///< the commands' curves use 0.6 (commandSpectralRun)
+  double maxRayleighSpread = 1.0;   ///< the commands' curves use 1.2 (commandSpectralRun)
 };
 
 /// Groups of indices into `optics` (each group in increasing wavelength; every index once).

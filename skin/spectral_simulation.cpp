@@ -28,12 +28,14 @@ SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
   spectral.walk.tabulatedMelanosomes = true;
   spectral.walk.splitEntryReflection = true;
   spectral.tally = run.tally;
-  // Curves: a tighter Rayleigh bound than the tables' (skin/spectral_bundle.h), so that no edge
-  // of a visible bundle has a standard error above the analog walk's; a wider θo bound, since
-  // the tallies' control variate (skin/core/controlled_means.h) takes most of the MIS ratio's
-  // variance at a bundle's edges (docs/benchmarks.md, session 21).
-  spectral.bundles.maxRayleighSpread = 0.8;
-  spectral.bundles.maxLogAngleSpread = 0.3;
+  // Curves: heroes in shares by law (skin/hero_shares.h) even out the variance over a bundle's
+  // members, and the tallies' control variate (skin/core/controlled_means.h) takes most of the MIS
+  // ratio's, so bundles may span wider laws than the tables' (skin/spectral_bundle.h) at the
+  // largest standard error uniform heroes gave with 0.8 and 0.3: 16 bundles on the S1 curve
+  // instead of 24 (docs/benchmarks.md, sessions 21 and 24).
+  spectral.walk.heroSharesByLaw = true;
+  spectral.bundles.maxRayleighSpread = 1.2;
+  spectral.bundles.maxLogAngleSpread = 0.6;
   spectral.splitRayleighWithoutDeflection = run.tally.polarBins == 0 && run.tally.radialBins == 0;
   return spectral;
 }

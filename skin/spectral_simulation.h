@@ -30,9 +30,10 @@ struct SpectralRunOptions {
 /// The spectral estimator as the commands and the Python module run it (spectrum, brdf, the
 /// profiles): run's incidence, rays, seed, walk and tally, with each melanosome's internal path
 /// drawn from the path-length table, the surface reflection at entry scored as an expected
-/// value, bundles bounded to a Rayleigh spread of 0.8 and a θo spread of 0.3
-/// (skin/spectral_bundle.h), and, without histograms, paths split at their first Rayleigh event
-/// where θo = 0 (SpectralRunOptions::splitRayleighWithoutDeflection).
+/// value, heroes in shares by law (WalkOptions::heroSharesByLaw), bundles bounded to a Rayleigh
+/// spread of 1.2 and a θo spread of 0.6 (skin/spectral_bundle.h), and, without histograms, paths
+/// split at their first Rayleigh event where θo = 0 (SpectralRunOptions::
+/// splitRayleighWithoutDeflection).
 SpectralRunOptions commandSpectralRun(const WalkRunOptions& run);
 
 /// The random stream of a bundle: a mix of its wavelengths' streams (skin_simulation.h).

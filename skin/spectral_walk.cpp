@@ -82,8 +82,9 @@ struct PathProgress {
   std::array<std::uint32_t, kPendingTableIndices> pendingIndex;
   unsigned pendingCount = 0;
   std::vector<double> logDensity;  ///< per λ: log p_λ(path) up to a common factor
-  /// Per hero j: log q_j(path) − log p_j(path), q_j the density with which hero j proposed the
-  /// path (0 except after a forced transmission, where q_j lacks the Fresnel factor).
+  /// Per hero j: log(n·c_j) + log q_j(path) − log p_j(path), c_j hero j's share (1/n: uniform)
+  /// and q_j the density with which hero j proposed the path (p_j except after a forced
+  /// transmission, where q_j lacks the Fresnel factor).
   std::vector<double> proposalOffset;
 };
 }  // namespace
@@ -110,7 +111,7 @@ class SpectralWalk::State : public PathProgress {
   std::vector<double>& ratio;              ///< scratch for MIS ratios
   std::vector<SpectralPath::Stay>& stays;  ///< the stays so far (per-layer absorption only)
 
-  /// Per λ: p_λ / mean_j q_j (1 for a single wavelength sampled by its own law), into `out`.
+  /// Per λ: p_λ / Σ_j c_j q_j (1 for a single wavelength sampled by its own law), into `out`.
   void misRatios(std::vector<double>& out) const {
     const std::size_t n = logDensity.size();
     out.assign(n, 1.0);
@@ -240,18 +241,28 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     facetPolar_.emplace(first.surfaceAspectRatio);
     aspectSquared_ = first.surfaceAspectRatio * first.surfaceAspectRatio;
   }
+  heroShares_ = HeroShares(wavelengthCount_);
+  if (options.heroSharesByLaw) {
+    std::vector<double> rayleighDepth(wavelengthCount_, 0.0);  // normal incidence, whole stack
+    for (const Slab& slab : slabs_)
+      for (std::size_t i = 0; i < slab.muRayleigh_perCm.size(); ++i)
+        rayleighDepth[i] += slab.muRayleigh_perCm[i] * (slab.bottomCm - slab.topCm);
+    heroShares_ = HeroShares(meanAngleRad_, rayleighDepth);
+  }
 }
 
 std::size_t SpectralWalk::drawHero(Rng& rng) const {
   if (wavelengthCount_ == 1) return 0;
-  return std::min(wavelengthCount_ - 1,
-                  static_cast<std::size_t>(rng.uniform() * static_cast<double>(wavelengthCount_)));
+  return heroShares_.draw(rng.uniform());
 }
 
 void SpectralWalk::startPath(State& s, const Vec3& direction, Rng& rng) const {
   s.path.events = 1;
   s.path.exitOffsetXCm = s.path.exitOffsetYCm = 0;
   s.hero = drawHero(rng);
+  // Hero j proposed with probability c_j: log(n·c_j) in its proposal, so that misRatios' mean
+  // over the heroes is the mixture Σ_j c_j q_j.
+  if (!heroShares_.uniform()) s.proposalOffset = heroShares_.logScaledShares();
   s.direction = direction;
 }
 

@@ -18,10 +18,11 @@
 // | interfaces                         | index.h): shared exactly                                    |
 //
 // Hero-wavelength sampling (Wilkie et al. 2014) with the balance heuristic over the bundle: each
-// path draws its hero uniformly among the bundle's wavelengths and makes every λ-dependent choice
-// with the hero's law; wavelength λ's score is f_λ/((1/N)Σ_j p_j), i.e. its transmittance times
-// p_λ(path)/mean_j p_j(path). The mixture bounds that ratio by N whatever the bundle, and it is
-// exact in expectation for every λ. The walk tracks log p_λ relative to a common factor.
+// path draws its hero among the bundle's wavelengths (uniformly, or with WalkOptions::
+// heroSharesByLaw in shares c_j, skin/hero_shares.h) and makes every λ-dependent choice with the
+// hero's law; wavelength λ's score is f_λ/Σ_j c_j p_j, i.e. its transmittance times
+// p_λ(path)/Σ_j c_j p_j(path). The mixture bounds that ratio by 1/c_λ whatever the bundle, and it
+// is exact in expectation for every λ. The walk tracks log p_λ relative to a common factor.
 // The ratio's expectation is exactly 1, so the tallies subtract its fluctuation as a control
 // variate (skin/core/controlled_means.h, SkinTally).
 // Russian roulette on the largest weight (checked at layer boundaries) ends paths unbiasedly.
@@ -43,6 +44,7 @@
 #include "skin/core/random.h"
 #include "skin/core/vector3.h"
 #include "skin/fresnel_pair.h"
+#include "skin/hero_shares.h"
 #include "skin/layer.h"
 #include "skin/melanosome_internal_walk.h"
 #include "skin/melanosome_path_lengths.h"
@@ -117,10 +119,11 @@ struct FacetNumbers {
 /// path can join the same one-sample MIS over the bundle.
 struct SpectralEntry {
   Vec3 direction;        ///< transmitted direction (z > 0), the same for every λ
-  std::size_t hero = 0;  ///< the wavelength whose law made the crossing (uniform over the bundle)
+  std::size_t hero = 0;  ///< the wavelength whose law made the crossing (by the hero shares)
   /// Per λ, up to one common additive constant: log p_λ, the density of the crossing under λ's
   /// own law (target), and log q_λ, the density with which hero λ would have proposed it (they
-  /// differ by the Fresnel factor of a forced transmission, WalkOptions::splitEntryReflection).
+  /// differ by the Fresnel factor of a forced transmission, WalkOptions::splitEntryReflection),
+  /// plus log(n·c_λ) where the shares are not uniform (WalkOptions::heroSharesByLaw).
   std::vector<double> logTarget, logProposal;
 };
 
@@ -197,7 +200,7 @@ class SpectralWalk {
   /// The crossing from air; false when the surface reflected the path, which is then scored.
   bool enterFromAir(State& s, Rng& rng, bool splitEntryReflection,
                     const FacetNumbers* firstFacet) const;
-  /// The hero: uniform over the bundle.
+  /// The hero: by heroShares_ (uniform unless WalkOptions::heroSharesByLaw).
   std::size_t drawHero(Rng& rng) const;
   /// The rough (or smooth) surface crossing of Sec. 4.3 from air (fromInside false) or from the
   /// skin; returns whether the ray ended on the far side, updating s.direction and densities.
@@ -246,6 +249,7 @@ class SpectralWalk {
   double smallestSurfaceIndex_ = 1;
   std::optional<SurfaceNormalPolarSampler> facetPolar_;
   double aspectSquared_ = 1;
+  HeroShares heroShares_;
 };
 
 }  // namespace hylios::skin

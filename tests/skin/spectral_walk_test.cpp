@@ -1,9 +1,10 @@
 // The spectral walk (one path, many wavelengths) against the per-wavelength analog walk it
 // replaces: same expectation for every wavelength, specimen and incidence. Each comparison's z is
 // the difference over the combined standard error (each side's error from its own per-path
-// scores); a test's 630 scores are judged as one family, |z| ≤ 4.32 (1 % false alarms, Bonferroni:
-// tests/support/score_family.h). Measured over 13 seed pairs (32,760 scores): z has mean 0.02 and
-// standard deviation 0.99, with 85 beyond 3 (88 expected) and 3 beyond 4 (2.1 expected).
+// scores); a test's scores are judged as one family, |z| ≤ 4.32 for 630 of them (1 % false
+// alarms, Bonferroni: tests/support/score_family.h). Measured over 13 seed pairs (32,760 scores): z
+// has mean 0.02 and standard deviation 0.99, with 85 beyond 3 (88 expected) and 3 beyond 4 (2.1
+// expected).
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -69,10 +70,11 @@ void compare(const SkinTally& spectral, const SkinTally& analog, const std::stri
           analog.absorptance(layer));
 }
 
-/// Spectral and per-wavelength walks of `specimen` at 0°, 45° and 80° over kWavelengthsNm.
+/// Spectral and per-wavelength walks of `specimen` at 0°, 45° and 80° over `wavelengths`.
 void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays,
-                               const WalkOptions& walk = {}) {
-  const std::vector<SkinOptics> optics = opticsAt(specimen, kWavelengthsNm);
+                               const WalkOptions& walk = {}, const BundleRule& rule = {},
+                               const std::vector<double>& wavelengths = kWavelengthsNm) {
+  const std::vector<SkinOptics> optics = opticsAt(specimen, wavelengths);
   hylios::test::ScoreFamily family;
   for (double angle : {0.0, 45.0, 80.0}) {
     SpectralRunOptions spectral;
@@ -80,6 +82,7 @@ void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays,
     spectral.rays = rays;
     spectral.seed = 11;
     spectral.walk = walk;
+    spectral.bundles = rule;
     const std::vector<SkinTally> s = simulateSkinSpectral(optics, spectral);
     for (std::size_t i = 0; i < optics.size(); ++i) {
       WalkRunOptions analog;
@@ -87,12 +90,12 @@ void expectSameAsPerWavelength(const std::string& specimen, std::uint64_t rays,
       analog.rays = rays;
       analog.seed = 12;
       std::ostringstream where;
-      where << specimen << " " << kWavelengthsNm[i] << " nm " << angle << "°";
+      where << specimen << " " << wavelengths[i] << " nm " << angle << "°";
       compare(s[i], simulateSkin(optics[i], analog), where.str(), family);
       EXPECT_EQ(s[i].eventLimited().mean, 0.0) << where.str();
     }
   }
-  EXPECT_EQ(family.size(), 630u);
+  EXPECT_EQ(family.size(), 30 * wavelengths.size());
   family.expectWithinFamilyWiseBound();
 }
 
@@ -115,6 +118,73 @@ TEST(SpectralWalk, RayleighSplitMatchesPerWavelengthWalkS4) {
   WalkOptions walk;
   walk.splitFirstRayleigh = true;
   expectSameAsPerWavelength("S4", 6000, walk);
+}
+
+// Heroes in shares by law (WalkOptions::heroSharesByLaw) in the curves' wide bundles: 31
+// wavelengths 75 nm apart over 250–2500 nm (250, 1450, 2500 among them; 785–1375 nm in the θo
+// ramp), so that the bundles hold members of different θo and τ: 930 scores per specimen.
+std::vector<double> everySeventyFiveNm() {
+  std::vector<double> wavelengths;
+  for (double w = 250; w <= 2500; w += 75) wavelengths.push_back(w);
+  return wavelengths;
+}
+void expectHeroSharesSameAsPerWavelength(const std::string& specimen) {
+  WalkOptions walk;
+  walk.heroSharesByLaw = true;
+  BundleRule rule;
+  rule.maxLogAngleSpread = 0.6;
+  rule.maxRayleighSpread = 1.2;
+  const std::vector<double> wavelengths = everySeventyFiveNm();
+  const std::vector<SkinOptics> optics = opticsAt(specimen, wavelengths);
+  WalkOptions bundling;
+  ASSERT_LT(groupIntoBundles(optics, bundling, rule).size(), 12u);  // members share paths
+  expectSameAsPerWavelength(specimen, 6000, walk, rule, wavelengths);
+}
+TEST(SpectralWalk, HeroSharesMatchPerWavelengthWalkS1) {
+  expectHeroSharesSameAsPerWavelength("S1");
+}
+TEST(SpectralWalk, HeroSharesMatchPerWavelengthWalkS4) {
+  expectHeroSharesSameAsPerWavelength("S4");
+}
+
+TEST(SpectralWalk, EveryMisRatioHasMeanOneWithUniformAndLawShares) {
+  // The tallies' control variate corrects a ratio of the wrong scale almost exactly (each score
+  // is about R·U), so the comparisons above would not see heroes drawn with shares the balance
+  // heuristic does not use; the ratio's own mean must be 1 for every member. S1 at 45°, 30
+  // members of the θo ramp (785–1075 nm, ln θo spread 0.64), 20 000 paths each way.
+  std::vector<double> wavelengths;
+  for (double w = 785; w <= 1075; w += 10) wavelengths.push_back(w);
+  const std::vector<SkinOptics> optics = opticsAt("S1", wavelengths);
+  hylios::test::ScoreFamily family;
+  for (bool shares : {false, true}) {
+    WalkOptions options;
+    options.heroSharesByLaw = shares;
+    options.tabulatedMelanosomes = true;
+    const SpectralWalk walk(optics, options);
+    std::vector<double> sum(optics.size(), 0.0), sumSquares(optics.size(), 0.0);
+    SpectralPath path;
+    constexpr int kPaths = 20000;
+    const double angle = 45.0 * 3.14159265358979323846 / 180.0;
+    for (int k = 0; k < kPaths; ++k) {
+      Rng rng(21, shares ? 2 : 1, static_cast<std::uint64_t>(k));
+      walk.trace(Vec3{std::sin(angle), 0.0, std::cos(angle)}, rng, path);
+      for (std::size_t i = 0; i < optics.size(); ++i) {
+        const double u = path.exitWeight[i] + path.absorbedTotal[i] +
+                         (path.surfaceWeight.empty() ? 0.0 : path.surfaceWeight[i]);
+        sum[i] += u;
+        sumSquares[i] += u * u;
+      }
+    }
+    for (std::size_t i = 0; i < optics.size(); ++i) {
+      const double mean = sum[i] / kPaths;
+      const double error = std::sqrt((sumSquares[i] / kPaths - mean * mean) / (kPaths - 1));
+      std::ostringstream what;
+      what << wavelengths[i] << " nm, " << (shares ? "law" : "uniform") << " shares: mean ratio "
+           << mean << " ± " << error;
+      family.add(what.str(), hylios::test::zScore(mean - 1.0, error));
+    }
+  }
+  family.expectWithinFamilyWiseBound();
 }
 
 TEST(SpectralWalk, RayleighSplitHalvesTheWaterBandsVariance) {
