@@ -26,9 +26,10 @@ TEST(HeroShares, WidthsByLawHandValues) {
   const HeroShares four({0.08, 0.04, 0.04, 0.02}, {0.0, 0.0, 0.0, 0.0});
   EXPECT_NEAR(four.shares()[0], 0.3162675, 1e-7);
   EXPECT_NEAR(four.shares()[1], 0.1837325, 1e-7);
-  // Both laws at once: the gap is the distance in reaches, sqrt((ln ½/0.25)² + (ln 4/0.6)²).
-  const HeroShares two({0.08, 0.04}, {1.0, 4.0}, HeroShareReach{0.25, 0.6});
-  EXPECT_DOUBLE_EQ(two.shares()[0], 0.5);
+  // Both laws at once: each gap is the distance in reaches, √((ln ½/0.25)² + (ln 4/0.6)²) =
+  // 3.60910; the middle member's share g/(2 + 2g) = 0.391519.
+  const HeroShares both({0.08, 0.04, 0.02}, {1.0, 4.0, 16.0}, HeroShareReach{0.25, 0.6});
+  EXPECT_NEAR(both.shares()[1], 0.391519, 1e-6);
   // θo = 0 for all (a point mass) leaves τ alone: ln 2/0.6 = 1.1552 between members.
   const HeroShares tauOnly({0.0, 0.0, 0.0}, {1.0, 2.0, 4.0});
   const double g = std::log(2.0) / 0.6;
