@@ -6,8 +6,6 @@
 #include <stdexcept>
 
 namespace hylios::skin {
-namespace {
-/// The Rayleigh optical depth of the stack at normal incidence (what one pass sees).
 double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk) {
   if (!walk.rayleigh) return 0;
   double depth = 0;
@@ -17,6 +15,7 @@ double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk) {
   return depth;
 }
 
+namespace {
 struct Range {
   double lowest = 0, highest = 0;
   void reset(double x) { lowest = highest = x; }

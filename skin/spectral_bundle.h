@@ -41,6 +41,10 @@ struct BundleRule {
   double maxRayleighSpread = 1.0;   ///< the commands' curves use 1.2 (commandSpectralRun)
 };
 
+/// The Rayleigh optical depth τ of the walked stack at normal incidence (what one pass sees; 0
+/// when the walk has no Rayleigh): one of the laws that bound a bundle and set its hero shares.
+double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk);
+
 /// Groups of indices into `optics` (each group in increasing wavelength; every index once).
 std::vector<std::vector<std::size_t>> groupIntoBundles(const std::vector<SkinOptics>& optics,
                                                        const WalkOptions& walk = {},

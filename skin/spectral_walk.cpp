@@ -2,22 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "skin/core/constants.h"
-#include "skin/fresnel.h"
 #include "skin/interface_crossing.h"
 #include "skin/melanosome_interaction.h"
-#include "skin/rough_surface.h"
 #include "skin/sampling/rayleigh_sampling.h"
+#include "skin/spectral_bundle.h"
+#include "skin/spectral_walk_state.h"
 #include "skin/spectral_weights.h"
 
 namespace hylios::skin {
+using spectral_walk_detail::kInfinity;
+using spectral_walk_detail::kPendingTableIndices;
+
 namespace {
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-/// Redraws of a facet normal that faces away from the ray (as RoughSurface::facingNormal).
 /// Relative tolerance on index ratios that must be equal across the bundle (rounding only).
 constexpr double kRatioTolerance = 1e-9;
 
@@ -27,10 +27,6 @@ constexpr unsigned kTableIndexBits = 18;
 static_assert(kSpectralMelanosomeTableSamples == std::size_t{1} << kTableIndexBits &&
               3 * kTableIndexBits <= 64);
 constexpr std::uint64_t kTableIndexMask = (std::uint64_t{1} << kTableIndexBits) - 1;
-/// log(1/kSpectralRouletteWeight): the roulette's depth bound while no roulette was survived.
-const double kRouletteDepthBoundAtOne = std::log(1.0 / kSpectralRouletteWeight);
-/// The most indices drawn ahead (a complex's melanosomes, rounded up to three).
-constexpr unsigned kPendingTableIndices = 48;
 
 /// An exponential free path of coefficient μ (given with its inverse): +∞ for μ = 0.
 double sampleFreePathCm(double mu_perCm, double inverseMuCm, Rng& rng) {
@@ -53,95 +49,7 @@ double logAngleNormalisation(double meanAngleRad) {
 }
 
 std::string layerText(Layer layer) { return std::string(layerName(layer)); }
-/// The walk's progress along one path: everything but the SpectralPath it writes, so that a path
-/// split at a Rayleigh event continues as two copies of it (SpectralWalk::splitAtRayleigh).
-struct PathProgress {
-  Vec3 position{0, 0, 0};
-  Vec3 direction;
-  std::size_t slab = 0;
-  std::size_t hero = 0;
-  bool rayleighAvailable = true;
-  double roulette = 1;                          ///< product of 1/P over the roulettes survived
-  double branchWeight = 1;                      ///< ½ in each branch of a split path
-  double stayCm = 0, stayMelaninCm = 0;         ///< path in the current slab since the stay began
-  std::array<double, kLayerCount> pathCm{};     ///< by slab: path travelled there (λ-free)
-  std::array<double, kLayerCount> melaninCm{};  ///< by slab: path inside melanin (λ-free)
-  /// The optical depth of the least absorbed λ, summed stay by stay (Russian roulette's bound),
-  /// and the depth below which roulette × e^{−depth} stays above kSpectralRouletteWeight.
-  double leastDepth = 0;
-  double rouletteDepthBound = kRouletteDepthBoundAtOne;
-  /// Sums whose per-λ densities SpectralWalk::settleDensities adds to logDensity once, at the end
-  /// (each λ's log density is linear in them): Algorithm 2's scatterings (count, Σθ), and by slab
-  /// the path flown while Rayleigh was available and the Rayleigh events.
-  unsigned angleCount = 0;
-  double angleSumRad = 0;
-  std::array<double, kLayerCount> rayleighCm{};
-  std::array<unsigned, kLayerCount> rayleighEvents{};
-  /// Tabulated melanosomes: path-length table indices drawn ahead of the meeting that uses them,
-  /// so that their loads were prefetched (SpectralWalk::meetMelanosomes); used last in, first out.
-  std::array<std::uint32_t, kPendingTableIndices> pendingIndex;
-  unsigned pendingCount = 0;
-  std::vector<double> logDensity;  ///< per λ: log p_λ(path) up to a common factor
-  /// Per hero j: log(n·c_j) + log q_j(path) − log p_j(path), c_j hero j's share (1/n: uniform)
-  /// and q_j the density with which hero j proposed the path (p_j except after a forced
-  /// transmission, where q_j lacks the Fresnel factor).
-  std::vector<double> proposalOffset;
-};
 }  // namespace
-
-/// The walk's state for one path (the per-λ arrays live in the SpectralPath, reused across paths).
-class SpectralWalk::State : public PathProgress {
- public:
-  State(SpectralPath& p, std::size_t n, bool layers) : path(p), ratio(p.scratch), stays(p.stays) {
-    startPath(n, layers);
-    logDensity.assign(n, 0.0);
-    proposalOffset.assign(n, 0.0);
-  }
-  /// The state of `other`'s path so far, continued into `p` (a branch: p's weights zero, no
-  /// surface weight of its own, the progress and stays so far copied).
-  State(SpectralPath& p, const State& other)
-      : PathProgress(other), path(p), ratio(p.scratch), stays(p.stays) {
-    startPath(other.logDensity.size(), !other.path.absorbed.empty());
-    p.events = other.path.events;
-    p.exitOffsetXCm = other.path.exitOffsetXCm;
-    p.exitOffsetYCm = other.path.exitOffsetYCm;
-    stays = other.stays;
-  }
-  SpectralPath& path;
-  std::vector<double>& ratio;              ///< scratch for MIS ratios
-  std::vector<SpectralPath::Stay>& stays;  ///< the stays so far (per-layer absorption only)
-
-  /// Per λ: p_λ / Σ_j c_j q_j (1 for a single wavelength sampled by its own law), into `out`.
-  void misRatios(std::vector<double>& out) const {
-    const std::size_t n = logDensity.size();
-    out.assign(n, 1.0);
-    double top = -std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < n; ++j)
-      top = std::max({top, logDensity[j], logDensity[j] + proposalOffset[j]});
-    if (!std::isfinite(top)) return out.assign(n, 0.0);
-    spectral_weights::exponentialsOfSum(n, logDensity.data(), proposalOffset.data(), -top,
-                                        out.data());
-    double proposal = 0;
-    for (std::size_t j = 0; j < n; ++j) proposal += out[j];
-    const double scale = static_cast<double>(n) / proposal;
-    spectral_weights::exponentials(n, logDensity.data(), 1.0, -top, out.data());
-    for (std::size_t i = 0; i < n; ++i) out[i] *= scale;
-  }
-
- private:
-  /// The path's per-λ outcomes zeroed for n wavelengths, no split, no stays.
-  void startPath(std::size_t n, bool layers) {
-    path.exitWeight.assign(n, 0.0);
-    path.absorbedTotal.assign(n, 0.0);
-    path.absorbed.assign(layers ? kLayerCount * n : 0, 0.0);
-    path.absorbedInMelanosomes.assign(layers ? kLayerCount * n : 0, 0.0);
-    path.transmittedDirection.clear();
-    path.surfaceWeight.clear();
-    path.split = false;
-    path.splitAtEvent = 0;
-    stays.clear();
-  }
-};
 
 SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions options)
     : options_(options), wavelengthCount_(bundle.size()) {
@@ -243,11 +151,9 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
   }
   heroShares_ = HeroShares(wavelengthCount_);
   if (options.heroSharesByLaw) {
-    std::vector<double> rayleighDepth(wavelengthCount_, 0.0);  // normal incidence, whole stack
-    for (const Slab& slab : slabs_)
-      for (std::size_t i = 0; i < slab.muRayleigh_perCm.size(); ++i)
-        rayleighDepth[i] += slab.muRayleigh_perCm[i] * (slab.bottomCm - slab.topCm);
-    heroShares_ = HeroShares(meanAngleRad_, rayleighDepth);
+    std::vector<double> depth;
+    for (const SkinOptics& o : bundle) depth.push_back(rayleighDepth(o, options));
+    heroShares_ = HeroShares(meanAngleRad_, depth);
   }
 }
 
@@ -269,6 +175,7 @@ void SpectralWalk::startPath(State& s, const Vec3& direction, Rng& rng) const {
 bool SpectralWalk::enterFromAir(State& s, Rng& rng, bool splitEntryReflection,
                                 const FacetNumbers* firstFacet) const {
   if (crossSurface(s, false, rng, splitEntryReflection, firstFacet)) return true;
+  s.zeroOutcomes();
   s.path.end = PathEnd::SurfaceReflection;
   s.path.exitDirection = s.direction;
   s.misRatios(s.path.exitWeight);
@@ -288,6 +195,7 @@ bool SpectralWalk::enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
   State s(path, wavelengthCount_, options_.layerAbsorption);
   startPath(s, incidentDirection, rng);
   if (!enterFromAir(s, rng, splitEntryReflection, firstFacet)) return false;
+  s.zeroOutcomes();  // the path pauses: its outcomes are the caller's (skin/exit_table_bundle.h)
   entry.direction = s.direction;
   entry.hero = s.hero;
   entry.logTarget = s.logDensity;
@@ -348,99 +256,6 @@ void SpectralWalk::meetMelanosomes(State& s, std::size_t k, Rng& rng) const {
   }
   const Azimuth phi = sampleAzimuth(rng);
   s.direction = directionAbout(s.direction, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
-}
-
-bool SpectralWalk::crossFacet(State& s, const Vec3& m, const Vec3& macro, bool delta,
-                              bool fromInside, Rng& rng, bool forceTransmission) const {
-  const double nFromH = fromInside ? surfaceIndex_[s.hero] : 1.0;
-  const double nToH = fromInside ? 1.0 : surfaceIndex_[s.hero];
-  const Vec3 d = s.direction;
-  const double cosI = dot(d, m);
-  const FresnelResult hero = fresnel(cosI, nFromH, nToH);
-  const bool reflect = !forceTransmission && nFromH != nToH &&
-                       (hero.reflectance >= 1.0 || rng.uniform() < hero.reflectance);
-  auto indices = [&](std::size_t i) {
-    return fromInside ? std::pair{surfaceIndex_[i], 1.0} : std::pair{1.0, surfaceIndex_[i]};
-  };
-  if (reflect) {
-    s.direction = reflectDirection(d, m);
-    // From inside beyond the critical angle of the smallest index, every λ reflects totally.
-    const bool totalForAll =
-        fromInside && 1.0 - cosI * cosI >= 1.0 / (smallestSurfaceIndex_ * smallestSurfaceIndex_);
-    if (surfaceIndicesDiffer_ && !totalForAll)
-      surfaceGroups_.addLogReflectances(cosI, fromInside, s.logDensity.data());
-    return false;
-  }
-  const Vec3 t = refractDirection(d, m, nFromH, nToH, hero.cosTransmitted);
-  s.direction = t;
-  if (!surfaceIndicesDiffer_) {
-    if (forceTransmission)  // one index: the target has the factor 1 − F, the proposal not
-      for (std::size_t i = 0; i < wavelengthCount_; ++i) {
-        s.logDensity[i] += std::log1p(-hero.reflectance);
-        s.proposalOffset[i] -= std::log1p(-hero.reflectance);
-      }
-    return true;
-  }
-  if (!delta) {  // each λ's facet through the generalised half vector (skin/spectral_weights.h)
-    surfaceGroups_.addRefractionDensities(d, t, macro, fromInside, aspectSquared_,
-                                          forceTransmission, s.logDensity.data(),
-                                          s.proposalOffset.data());
-    return true;
-  }
-  for (std::size_t i = 0; i < wavelengthCount_; ++i) {
-    // A point mass: only wavelengths that refract to the same direction share it.
-    const auto [n1, n2] = indices(i);
-    double& logDensity = s.logDensity[i];
-    logDensity = n2 == nToH && n1 == nFromH
-                     ? logDensity + std::log1p(-fresnelReflectance(cosI, n1, n2))
-                     : -kInfinity;
-  }
-  return true;
-}
-
-bool SpectralWalk::crossSurface(State& s, bool fromInside, Rng& rng, bool splitEntry,
-                                const FacetNumbers* firstFacet) const {
-  const double towardFar = s.direction.z > 0 ? 1.0 : -1.0;
-  bool onFarSide = false;
-  for (int attempt = 0; attempt <= kMaxSurfaceBounces; ++attempt) {
-    const double headingSign = onFarSide ? -towardFar : towardFar;
-    const Vec3 macroNormal{0, 0, -headingSign};
-    bool delta = !options_.roughSurface || attempt == kMaxSurfaceBounces;
-    Vec3 m = macroNormal;
-    if (!delta) {
-      delta = true;
-      for (int redraw = 0; redraw < kMaxFacetRedraws && delta; ++redraw) {
-        const FacetNumbers* numbers = attempt == 0 && redraw == 0 ? firstFacet : nullptr;
-        const PolarCosSin theta = facetPolar_->sample(rng, numbers ? &numbers->polar : nullptr);
-        const Azimuth phi = numbers ? azimuthFromUniform(numbers->azimuth) : sampleAzimuth(rng);
-        const Vec3 candidate =
-            directionAbout(macroNormal, theta.cosTheta, theta.sinTheta, phi.cosPhi, phi.sinPhi);
-        if (dot(s.direction, candidate) < 0) {
-          m = candidate;
-          delta = false;
-        }
-      }
-    }
-    const bool inSkin = fromInside != onFarSide;
-    // The entry split (WalkOptions::splitEntryReflection): when the first facet's mirror image of
-    // the ray leaves the surface, every λ scores that reflection with its Fresnel weight at once
-    // and the path is forced through the facet (the Fresnel choice is not drawn).
-    const Vec3 mirrored = reflectDirection(s.direction, m);
-    const bool split =
-        splitEntry && !fromInside && attempt == 0 && !delta && mirrored.z * towardFar < 0;
-    if (split) {
-      s.path.surfaceWeight.resize(wavelengthCount_);
-      surfaceGroups_.reflectances(dot(s.direction, m), false, s.path.surfaceWeight.data());
-      s.path.surfaceDirection = mirrored;
-    }
-    const bool transmitted = crossFacet(s, m, macroNormal, delta, inSkin, rng, split);
-    if (transmitted) onFarSide = !onFarSide;
-    const double awaySign = onFarSide ? towardFar : -towardFar;
-    if (s.direction.z * awaySign > 0) return onFarSide;
-    if (!options_.roughSurface) break;
-  }
-  s.direction.z = std::fabs(s.direction.z) * (onFarSide ? towardFar : -towardFar);
-  return onFarSide;
 }
 
 void SpectralWalk::endStay(State& s) const {
@@ -623,28 +438,6 @@ void SpectralWalk::traceEntered(State& s, Rng& rng) const {
     }
   }
   finish(s, PathEnd::EventLimit, true);
-}
-
-bool SpectralWalk::crossBottom(State& s, Rng& rng) const {
-  const Vec3 d = s.direction;
-  const double nBelow = options_.belowRefractiveIndex;
-  const FresnelResult hero = fresnel(d.z, bottomIndex_[s.hero], nBelow);
-  const bool reflect = bottomIndex_[s.hero] != nBelow &&
-                       (hero.reflectance >= 1.0 || rng.uniform() < hero.reflectance);
-  if (reflect) s.direction = Vec3{d.x, d.y, -d.z};
-  std::vector<Vec3>& out = s.path.transmittedDirection;
-  if (!reflect) out.assign(wavelengthCount_, Vec3{});
-  for (std::size_t i = 0; i < wavelengthCount_; ++i) {
-    const FresnelResult f = fresnel(d.z, bottomIndex_[i], nBelow);
-    if (wavelengthCount_ > 1)
-      s.logDensity[i] += reflect ? std::log(f.reflectance) : std::log1p(-f.reflectance);
-    if (!reflect) {
-      const double ratio = bottomIndex_[i] / nBelow;
-      out[i] = Vec3{d.x * ratio, d.y * ratio, std::copysign(f.cosTransmitted, d.z)};
-    }
-  }
-  if (!reflect) s.direction = out[s.hero];
-  return !reflect;
 }
 
 }  // namespace hylios::skin

@@ -2,14 +2,8 @@
 
 #include <cmath>
 
+#include "skin/core/vector_clones.h"
 #include "skin/core/vector_math.h"
-
-// GCC on x86-64: an AVX2 clone of each kernel besides the baseline (SSE2), chosen at load time.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__)
-#define HYLIOS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define HYLIOS_VECTOR_CLONES
-#endif
 
 namespace hylios::skin::spectral_weights {
 namespace {

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "skin/core/vector_clones.h"
+
 namespace hylios::skin {
 namespace {
 /// The sums' places: the control's two, then three per quantity.
@@ -14,6 +16,7 @@ ControlledMeansArray::ControlledMeansArray(std::size_t members, std::size_t quan
       quantities_(quantities),
       sums_((kFirstQuantity + 3 * quantities) * 2 * members, 0.0) {}
 
+HYLIOS_VECTOR_CLONES
 void ControlledMeansArray::beginPath(const double* u, unsigned fold) {
   if (fold > 1)
     throw std::invalid_argument("ControlledMeansArray::beginPath: fold " + std::to_string(fold));
@@ -28,6 +31,7 @@ void ControlledMeansArray::beginPath(const double* u, unsigned fold) {
   }
 }
 
+HYLIOS_VECTOR_CLONES
 void ControlledMeansArray::add(std::size_t k, const double* t) {
   if (!u_) throw std::logic_error("ControlledMeansArray::add before beginPath");
   if (k >= quantities_)

@@ -422,3 +422,20 @@ TEST(SpectralBundle, GroupsByAngleRayleighDepthAndSize) {
   smooth.roughSurface = false;  // a smooth surface refracts every index elsewhere: one λ per bundle
   EXPECT_EQ(groupIntoBundles(opticsAt("S1", {400, 450, 500}), smooth).size(), 3u);
 }
+
+TEST(SpectralBundle, RayleighDepthSumsTheWalkedLayersAtNormalIncidence) {
+  SkinOptics o = opticsAt("S1", {500}).front();
+  for (Layer layer : kAllLayers) o.layers[index(layer)].muRayleigh_perCm = 0;
+  o.layers[index(Layer::StratumBasale)].muRayleigh_perCm = 2;  // 2/cm × its thickness
+  o.layers[index(Layer::PapillaryDermis)].muRayleigh_perCm = 10;
+  o.layers[index(Layer::ReticularDermis)].muRayleigh_perCm = 5;
+  o.layers[index(Layer::StratumBasale)].thicknessCm = 0.01;
+  o.layers[index(Layer::PapillaryDermis)].thicknessCm = 0.02;
+  o.layers[index(Layer::ReticularDermis)].thicknessCm = 0.1;
+  WalkOptions walk;
+  EXPECT_NEAR(rayleighDepth(o, walk), 0.02 + 0.2 + 0.5, 1e-15);
+  walk.deepestLayer = Layer::PapillaryDermis;  // the reticular dermis is not walked
+  EXPECT_NEAR(rayleighDepth(o, walk), 0.02 + 0.2, 1e-15);
+  walk.rayleigh = false;
+  EXPECT_EQ(rayleighDepth(o, walk), 0.0);
+}
