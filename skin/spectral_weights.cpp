@@ -123,15 +123,25 @@ constexpr Expm1Series kExpm1Series;
 /// with kTerms = 0, 1 − vectorExp(−d) (d > 1/2, no cancellation to speak of). The series costs
 /// about half of vectorExp and keeps a small loss's relative accuracy.
 template <int kTerms>
+__attribute__((always_inline)) inline double absorbedFractionPerDepth(double d);
+
+template <int kTerms>
 __attribute__((always_inline)) inline double absorbedFraction(double d) {
   if constexpr (kTerms == 0) {
     return 1.0 - vectorExp(-d);
   } else {
-    static_assert(kTerms < kSeriesTerms);
-    double p = kExpm1Series.coefficient[kTerms];
-    for (int j = kTerms - 1; j >= 1; --j) p = p * d + kExpm1Series.coefficient[j];
-    return p * d;
+    return absorbedFractionPerDepth<kTerms>(d) * d;
   }
+}
+
+/// (1 − e^{−d})/d for kTerms > 0: absorbedFraction's series over d, the loss per unit depth, which
+/// splits a stay's loss among its absorbers without a division.
+template <int kTerms>
+__attribute__((always_inline)) inline double absorbedFractionPerDepth(double d) {
+  static_assert(kTerms > 0 && kTerms < kSeriesTerms);
+  double p = kExpm1Series.coefficient[kTerms];
+  for (int j = kTerms - 1; j >= 1; --j) p = p * d + kExpm1Series.coefficient[j];
+  return p;
 }
 
 /// One stay of stayLosses: the path's transmittance per λ updated, the stay's loss (without the
@@ -157,15 +167,20 @@ __attribute__((always_inline)) inline void bookStay(const StayBooking& b) {
   for (std::size_t i = 0; i < b.n; ++i) {
     const double melaninDepth = kMelanin ? melaninMuA[i] * melaninCm : 0.0;
     const double d = muA[i] * cm + melaninDepth;
-    const double fraction = absorbedFraction<kTerms>(d);
     const double before = transmitted[i];
-    const double lostHere = roulette * (before * fraction);
-    lost[i] += lostHere;
-    if (kMelanin) {
+    double fraction, lostInMelaninHere = 0.0;
+    if constexpr (kTerms > 0) {  // melanin's part as its depth × the loss per unit depth
+      const double perDepth = absorbedFractionPerDepth<kTerms>(d);
+      fraction = perDepth * d;
+      if (kMelanin) lostInMelaninHere = roulette * (before * perDepth) * melaninDepth;
+    } else {
+      fraction = absorbedFraction<0>(d);
       // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
       const double share = d > 0 ? melaninDepth / (d > 0 ? d : 1.0) : 0.0;
-      lostInMelanin[i] += lostHere * share;
+      if (kMelanin) lostInMelaninHere = roulette * (before * fraction) * share;
     }
+    lost[i] += roulette * (before * fraction);
+    if (kMelanin) lostInMelanin[i] += lostInMelaninHere;
     transmitted[i] = before - before * fraction;
   }
 }
