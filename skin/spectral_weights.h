@@ -15,9 +15,10 @@
 // |  Densities        | generalised half vector's facet density, Fresnel and Jacobian (Walter et |
 // |                   | al. 2007), as SpectralWalk::crossFacet adds it                           |
 //
-// On x86-64 with GCC each kernel is also compiled for AVX2 and chosen at load time (ifunc);
-// skin/CMakeLists.txt compiles this file with -ffp-contract=off so that no clone fuses a multiply
-// and an add: every clone computes the same bits, and results stay the same on every machine.
+// On x86-64 with GCC each kernel is also compiled for AVX-512 and AVX2 and chosen at load time
+// (skin/core/vector_clones.h); skin/CMakeLists.txt compiles this file with -ffp-contract=off so
+// that no clone fuses a multiply and an add: every clone computes the same bits, and results stay
+// the same on every machine.
 #pragma once
 #include <cstddef>
 
