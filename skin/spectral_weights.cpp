@@ -118,22 +118,6 @@ struct Expm1Series {
 };
 constexpr Expm1Series kExpm1Series;
 
-/// 1 − e^{−d} for 0 ≤ d: with kTerms > 0 its series Σ_{j ≤ kTerms} (−1)^{j+1} d^j/j! (Horner),
-/// whose truncation stays below 2e−17 relative for d ≤ 1/64 (7 terms), 1/8 (11) and 1/2 (15);
-/// with kTerms = 0, 1 − vectorExp(−d) (d > 1/2, no cancellation to speak of). The series costs
-/// about half of vectorExp and keeps a small loss's relative accuracy.
-template <int kTerms>
-__attribute__((always_inline)) inline double absorbedFractionPerDepth(double d);
-
-template <int kTerms>
-__attribute__((always_inline)) inline double absorbedFraction(double d) {
-  if constexpr (kTerms == 0) {
-    return 1.0 - vectorExp(-d);
-  } else {
-    return absorbedFractionPerDepth<kTerms>(d) * d;
-  }
-}
-
 /// (1 − e^{−d})/d for kTerms > 0: absorbedFraction's series over d, the loss per unit depth, which
 /// splits a stay's loss among its absorbers without a division.
 template <int kTerms>
@@ -142,6 +126,19 @@ __attribute__((always_inline)) inline double absorbedFractionPerDepth(double d) 
   double p = kExpm1Series.coefficient[kTerms];
   for (int j = kTerms - 1; j >= 1; --j) p = p * d + kExpm1Series.coefficient[j];
   return p;
+}
+
+/// 1 − e^{−d} for 0 ≤ d: with kTerms > 0 its series Σ_{j ≤ kTerms} (−1)^{j+1} d^j/j! (Horner),
+/// whose truncation stays below 2e−17 relative for d ≤ 1/64 (7 terms), 1/8 (11) and 1/2 (15);
+/// with kTerms = 0, 1 − vectorExp(−d) (d > 1/2, no cancellation to speak of). The series costs
+/// about half of vectorExp and keeps a small loss's relative accuracy.
+template <int kTerms>
+__attribute__((always_inline)) inline double absorbedFraction(double d) {
+  if constexpr (kTerms == 0) {
+    return 1.0 - vectorExp(-d);
+  } else {
+    return absorbedFractionPerDepth<kTerms>(d) * d;
+  }
 }
 
 /// One stay of stayLosses: the path's transmittance per λ updated, the stay's loss (without the

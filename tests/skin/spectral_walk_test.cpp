@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "skin/core/constants.h"
 #include "skin/skin_simulation.h"
 #include "skin/specimen.h"
 #include "skin/spectral_bundle.h"
@@ -136,8 +137,7 @@ void expectHeroSharesSameAsPerWavelength(const std::string& specimen) {
   rule.maxRayleighSpread = 1.2;
   const std::vector<double> wavelengths = everySeventyFiveNm();
   const std::vector<SkinOptics> optics = opticsAt(specimen, wavelengths);
-  WalkOptions bundling;
-  ASSERT_LT(groupIntoBundles(optics, bundling, rule).size(), 12u);  // members share paths
+  ASSERT_LT(groupIntoBundles(optics, walk, rule).size(), 12u);  // members share paths
   expectSameAsPerWavelength(specimen, 6000, walk, rule, wavelengths);
 }
 TEST(SpectralWalk, HeroSharesMatchPerWavelengthWalkS1) {
@@ -164,7 +164,7 @@ TEST(SpectralWalk, EveryMisRatioHasMeanOneWithUniformAndLawShares) {
     std::vector<double> sum(optics.size(), 0.0), sumSquares(optics.size(), 0.0);
     SpectralPath path;
     constexpr int kPaths = 20000;
-    const double angle = 45.0 * 3.14159265358979323846 / 180.0;
+    const double angle = 45.0 * hylios::kPi / 180.0;
     for (int k = 0; k < kPaths; ++k) {
       Rng rng(21, shares ? 2 : 1, static_cast<std::uint64_t>(k));
       walk.trace(Vec3{std::sin(angle), 0.0, std::cos(angle)}, rng, path);
