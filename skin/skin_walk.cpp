@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "skin/interface_crossing.h"
+#include "skin/sampling/exponential_ziggurat.h"
 #include "skin/sampling/polar_rejection_sampling.h"
 #include "skin/sampling/rayleigh_sampling.h"
 
@@ -16,7 +17,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// Free path for total coefficient mu (Eq. 1); infinite when nothing attenuates. 1 − u is exact for
 /// the Rng's multiples of 2⁻⁵³, so log(1 − u) equals log1p(−u) and is cheaper.
 double sampleFreePathCm(double mu_perCm, Rng& rng) {
-  return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) / mu_perCm : kInfinity;
+  return mu_perCm > 0 ? sampleStandardExponential(rng) / mu_perCm : kInfinity;
 }
 
 }  // namespace

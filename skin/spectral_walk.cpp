@@ -8,6 +8,7 @@
 #include "skin/core/constants.h"
 #include "skin/interface_crossing.h"
 #include "skin/melanosome_interaction.h"
+#include "skin/sampling/exponential_ziggurat.h"
 #include "skin/sampling/rayleigh_sampling.h"
 #include "skin/spectral_bundle.h"
 #include "skin/spectral_walk_state.h"
@@ -30,7 +31,7 @@ constexpr std::uint64_t kTableIndexMask = (std::uint64_t{1} << kTableIndexBits) 
 
 /// An exponential free path of coefficient μ (given with its inverse): +∞ for μ = 0.
 double sampleFreePathCm(double mu_perCm, double inverseMuCm, Rng& rng) {
-  return mu_perCm > 0 ? -std::log(1.0 - rng.uniform()) * inverseMuCm : kInfinity;
+  return mu_perCm > 0 ? sampleStandardExponential(rng) * inverseMuCm : kInfinity;
 }
 
 bool sameRatio(double a, double b) { return std::fabs(a - b) <= kRatioTolerance * std::fabs(b); }

@@ -6,6 +6,7 @@
 
 #include "skin/core/constants.h"
 #include "skin/sampling/exponential_polar_sampling.h"
+#include "skin/sampling/exponential_ziggurat.h"
 #include "skin/sampling/surface_normal_sampling.h"
 
 namespace hylios::skin {
@@ -51,9 +52,9 @@ PolarCosSin sampleExponentialPolarCosSin(double meanAngleRad, Rng& rng) {
     return {std::cos(theta), std::sin(theta), theta};
   }
   for (;;) {
-    // Gamma(2, θo): the sum of two exponentials; 1 − u lies in (0, 1], so the log is finite.
-    const double u1 = rng.uniform(), u2 = rng.uniform();
-    const double theta = -meanAngleRad * std::log((1.0 - u1) * (1.0 - u2));
+    // Gamma(2, θo): θo times the sum of two standard exponentials.
+    const double theta =
+        meanAngleRad * (sampleStandardExponential(rng) + sampleStandardExponential(rng));
     if (!(theta <= kPi)) continue;
     const auto [cosTheta, sinTheta] = cosSinOf(theta);
     const double u3 = rng.uniform();
