@@ -7,7 +7,8 @@
 // Malley's construction (lift the disk point to the hemisphere) a cosine-weighted direction.
 //
 // Algorithm 2's law, p(θ) ∝ e^{−θ/θo} sinθ on [0, π]: proposal Gamma(2, θo), density
-// ∝ θ e^{−θ/θo} on [0, ∞), drawn as −θo·ln(u1·u2); accepted with probability sinθ/θ (≤ 1) when
+// ∝ θ e^{−θ/θo} on [0, ∞), drawn as θo·(E1 + E2) with E standard exponentials from the ziggurat
+// (skin/sampling/exponential_ziggurat.h); accepted with probability sinθ/θ (≤ 1) when
 // θ ≤ π. The acceptance rate is ≈ 1 − θo² (0.992 at the paper's θo = 5°). Above θo = 0.5 rad
 // (acceptance < 0.8, never used by the model, whose θo ≤ 5°) the inversion sampler is used.
 //
