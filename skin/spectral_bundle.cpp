@@ -15,6 +15,14 @@ double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk) {
   return depth;
 }
 
+double absorptionDepth(const SkinOptics& optics, const WalkOptions& walk) {
+  double depth = 0;
+  for (Layer layer : kAllLayers)
+    if (index(layer) <= index(walk.deepestLayer))
+      depth += optics[layer].muATotal_perCm * optics[layer].thicknessCm;
+  return depth;
+}
+
 namespace {
 struct Range {
   double lowest = 0, highest = 0;
@@ -33,7 +41,16 @@ std::vector<std::vector<std::size_t>> groupIntoBundles(const std::vector<SkinOpt
     throw std::invalid_argument("bundle rule: at most 0 wavelengths per bundle");
   std::vector<std::size_t> order(optics.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
+  // Deflecting members in increasing λ; undeflected ones (θo = 0) after them, least absorbed
+  // first, so that a bundle's members are absorbed alike and its paths end together.
+  const auto undeflected = [&](std::size_t i) {
+    return walk.melanosomes && optics[i].meanScatteringAngleRad == 0;
+  };
+  std::vector<double> depth(optics.size());
+  for (std::size_t i = 0; i < optics.size(); ++i) depth[i] = absorptionDepth(optics[i], walk);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (undeflected(a) != undeflected(b)) return undeflected(b);
+    if (undeflected(a) && depth[a] != depth[b]) return depth[a] < depth[b];
     return optics[a].wavelengthNm < optics[b].wavelengthNm;
   });
   std::vector<std::vector<std::size_t>> bundles;
@@ -65,6 +82,10 @@ std::vector<std::vector<std::size_t>> groupIntoBundles(const std::vector<SkinOpt
     }
     bundles.back().push_back(i);
   }
+  for (auto& bundle : bundles)  // each bundle in increasing λ (hero shares take neighbours so)
+    std::sort(bundle.begin(), bundle.end(), [&](std::size_t a, std::size_t b) {
+      return optics[a].wavelengthNm < optics[b].wavelengthNm;
+    });
   return bundles;
 }
 

@@ -13,8 +13,12 @@
 // |                                    |  bound where Rayleigh is rare)                             |
 // | a smooth surface (no roughness)    | one surface index per bundle (a delta refraction)          |
 //
-// Wavelengths are taken in increasing order and a bundle is closed when the next one would break a
-// bound or the bundle holds maxWavelengths.
+// Wavelengths are taken in increasing order, except that those Algorithm 2 does not deflect
+// (θo = 0, from 1400 nm) follow in increasing absorption depth (absorptionDepth), and a bundle is
+// closed when the next one would break a bound or the bundle holds maxWavelengths. Members absorbed
+// alike die together: the walk's roulette follows the least absorbed member, so a bundle of the
+// water bands' strongly absorbed members ends its paths early instead of carrying them along the
+// long paths of 1700 or 2200 nm (S1 curve, 1400–2500 nm: 0.87× the time, session 26).
 //
 // The bounds set the variance at a bundle's edges, where a member's law has neighbours on one side
 // only (docs/benchmarks.md, "The spectral estimator"): on the S1 curve (10⁵ rays) the spreads 0.3
@@ -44,6 +48,10 @@ struct BundleRule {
 /// The Rayleigh optical depth τ of the walked stack at normal incidence (what one pass sees; 0
 /// when the walk has no Rayleigh): one of the laws that bound a bundle and set its hero shares.
 double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk);
+
+/// The absorption optical depth of the walked stack at normal incidence, Σ μa·thickness over its
+/// layers (melanosomes' interiors left out): the order in which undeflected members are grouped.
+double absorptionDepth(const SkinOptics& optics, const WalkOptions& walk);
 
 /// Groups of indices into `optics` (each group in increasing wavelength; every index once).
 std::vector<std::vector<std::size_t>> groupIntoBundles(const std::vector<SkinOptics>& optics,

@@ -36,6 +36,7 @@ SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
   spectral.walk.heroSharesByLaw = true;
   spectral.bundles.maxRayleighSpread = 1.2;
   spectral.bundles.maxLogAngleSpread = 0.6;
+  spectral.bundles.maxWavelengths = 96;
   spectral.splitRayleighWithoutDeflection = run.tally.polarBins == 0 && run.tally.radialBins == 0;
   return spectral;
 }

@@ -423,6 +423,52 @@ TEST(SpectralBundle, GroupsByAngleRayleighDepthAndSize) {
   EXPECT_EQ(groupIntoBundles(opticsAt("S1", {400, 450, 500}), smooth).size(), 3u);
 }
 
+TEST(SpectralBundle, UndeflectedMembersAreGroupedByAbsorptionDepth) {
+  // 1400–2500 nm (θo = 0): bundles of at most 16 take the members in increasing absorption depth,
+  // so each bundle's depths lie below the next one's, while each bundle is in increasing λ.
+  std::vector<double> wavelengths;
+  for (double w = 1400; w <= 2500; w += 10) wavelengths.push_back(w);
+  const std::vector<SkinOptics> optics = opticsAt("S1", wavelengths);
+  const WalkOptions walk;
+  BundleRule rule;
+  rule.maxWavelengths = 16;
+  const auto bundles = groupIntoBundles(optics, walk, rule);
+  ASSERT_EQ(bundles.size(), (wavelengths.size() + 15) / 16);
+  double previousDeepest = 0;
+  for (const auto& bundle : bundles) {
+    double shallowest = INFINITY, deepest = 0;
+    for (std::size_t i : bundle) {
+      ASSERT_EQ(optics[i].meanScatteringAngleRad, 0.0);
+      shallowest = std::min(shallowest, absorptionDepth(optics[i], walk));
+      deepest = std::max(deepest, absorptionDepth(optics[i], walk));
+    }
+    EXPECT_GE(shallowest, previousDeepest);
+    previousDeepest = deepest;
+    for (std::size_t k = 1; k < bundle.size(); ++k)
+      EXPECT_LT(optics[bundle[k - 1]].wavelengthNm, optics[bundle[k]].wavelengthNm);
+  }
+  // Not contiguous in λ: the water bands' members (1450, 1940 nm) share the last bundles.
+  const auto& last = bundles.back();
+  EXPECT_GT(optics[last.back()].wavelengthNm - optics[last.front()].wavelengthNm, 16 * 10.0);
+}
+
+TEST(SpectralBundle, AbsorptionDepthSumsTheWalkedLayersAtNormalIncidence) {
+  SkinOptics o = opticsAt("S1", {500}).front();
+  double expected = 0;
+  double muA_perCm = 1.0;  // hand values: 1, 2, … 6 per cm from the surface down
+  for (Layer layer : kAllLayers) {
+    o.layers[index(layer)].muATotal_perCm = muA_perCm;
+    expected += muA_perCm * o.layers[index(layer)].thicknessCm;
+    muA_perCm += 1.0;
+  }
+  EXPECT_NEAR(absorptionDepth(o, {}), expected, 1e-15 * expected);
+  WalkOptions papillary;
+  papillary.deepestLayer = Layer::PapillaryDermis;
+  EXPECT_NEAR(absorptionDepth(o, papillary),
+              expected - 6.0 * o.layers[index(Layer::ReticularDermis)].thicknessCm,
+              1e-15 * expected);
+}
+
 TEST(SpectralBundle, RayleighDepthSumsTheWalkedLayersAtNormalIncidence) {
   SkinOptics o = opticsAt("S1", {500}).front();
   for (Layer layer : kAllLayers) o.layers[index(layer)].muRayleigh_perCm = 0;
