@@ -349,6 +349,7 @@ std::vector<ExitTable> ExitTable::buildBundle(const std::vector<const SkinWalk*>
   }
   WalkOptions options = buildOptions(bundle[0]->options(), settings);
   options.layerAbsorption = true;
+  options.melanosomeAbsorption = true;  // the tables' melanosome outcomes
   options.splitEntryReflection = false;
   const SpectralWalk spectral(optics, options);
   const std::size_t members = bundle.size();

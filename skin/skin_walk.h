@@ -64,6 +64,10 @@ struct WalkOptions {
   /// Spectral walk (skin/spectral_walk.h) only: book the absorbed weight per layer (one exp per
   /// layer stay and wavelength); without it only the total absorptance (1 − R − T) is scored.
   bool layerAbsorption = true;
+  /// Spectral walk only, with layerAbsorption: also book the part of each layer's absorbed weight
+  /// taken by melanin inside melanosomes (SkinTally::melanosomeAbsorptance); without it that
+  /// quantity is not scored (the commands print no such column).
+  bool melanosomeAbsorption = true;
   /// Spectral walk only (renders): at the first facet from air whose mirror image leaves the
   /// surface, score that reflection for every λ at once (SpectralPath::surfaceWeight, expected
   /// value) and force the path through the facet instead of drawing the Fresnel choice.

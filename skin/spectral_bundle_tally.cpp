@@ -22,7 +22,8 @@ void SpectralBundleTally::record(const SpectralPath& path, std::uint64_t ray) {
   bool sizesMatch = path.exitWeight.size() == n && path.absorbedTotal.size() == n &&
                     (path.surfaceWeight.empty() || path.surfaceWeight.size() == n) &&
                     (path.absorbed.empty() || path.absorbed.size() == kLayerCount * n) &&
-                    path.absorbedInMelanosomes.size() == path.absorbed.size();
+                    (path.absorbedInMelanosomes.empty() ||
+                     path.absorbedInMelanosomes.size() == path.absorbed.size());
   if (path.split && (path.backward.empty() || !path.backward.front().surfaceWeight.empty()))
     throw std::invalid_argument(
         "SpectralBundleTally::record: a split path without its backward branch, or with a "
@@ -32,7 +33,7 @@ void SpectralBundleTally::record(const SpectralPath& path, std::uint64_t ray) {
     sizesMatch = sizesMatch && backward->exitWeight.size() == n &&
                  backward->absorbedTotal.size() == n &&
                  backward->absorbed.size() == path.absorbed.size() &&
-                 backward->absorbedInMelanosomes.size() == path.absorbed.size();
+                 backward->absorbedInMelanosomes.size() == path.absorbedInMelanosomes.size();
   if (!sizesMatch)
     throw std::invalid_argument("SpectralBundleTally::record: a path with " +
                                 std::to_string(path.exitWeight.size()) + " weights in a tally of " +
@@ -61,9 +62,11 @@ void SpectralBundleTally::recordEach(const SpectralPath& path, std::uint64_t ray
     score.controlWeight = score.absorbed + score.exitWeight + score.surfaceWeight;
     if (!path.absorbed.empty()) {
       score.absorbedInMelanosomes = 0;
+      const bool melanosomes = !path.absorbedInMelanosomes.empty();
       for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
         score.absorbedByLayer[layer] = path.absorbed[layer * wavelengths_ + i];
-        score.absorbedInMelanosomes += path.absorbedInMelanosomes[layer * wavelengths_ + i];
+        if (melanosomes)
+          score.absorbedInMelanosomes += path.absorbedInMelanosomes[layer * wavelengths_ + i];
       }
     }
     if (perWavelengthDirection) score.exitDirection = path.transmittedDirection[i];
@@ -100,7 +103,7 @@ const double* SpectralBundleTally::scoresOf(const SpectralPath& path, std::size_
     case SkinTally::kEventLimited:
       return path.end == PathEnd::EventLimit ? w : nullptr;
     case SkinTally::kMelanosome: {
-      if (!layers) return nullptr;
+      if (path.absorbedInMelanosomes.empty()) return nullptr;  // not booked
       const double* inMelanosomes = path.absorbedInMelanosomes.data();
       for (std::size_t i = 0; i < n; ++i) scratch[i] = 0.0 + inMelanosomes[i];  // layer by layer
       for (std::size_t layer = 1; layer < kLayerCount; ++layer)

@@ -27,6 +27,7 @@ SpectralRunOptions commandSpectralRun(const WalkRunOptions& run) {
   spectral.walk = run.walk;
   spectral.walk.tabulatedMelanosomes = true;
   spectral.walk.splitEntryReflection = true;
+  spectral.walk.melanosomeAbsorption = false;  // no command prints it (0.9x the curve's time)
   spectral.tally = run.tally;
   // Curves: heroes in shares by law (skin/hero_shares.h) even out the variance over a bundle's
   // members, and the tallies' control variate (skin/core/controlled_means.h) takes most of the MIS

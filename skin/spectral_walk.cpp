@@ -185,7 +185,7 @@ bool SpectralWalk::enterFromAir(State& s, Rng& rng, bool splitEntryReflection,
 
 void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
                          bool splitEntryReflection, const FacetNumbers* firstFacet) const {
-  State s(path, wavelengthCount_, options_.layerAbsorption);
+  State s(path, wavelengthCount_, options_.layerAbsorption, options_.melanosomeAbsorption);
   startPath(s, incidentDirection, rng);
   if (enterFromAir(s, rng, splitEntryReflection, firstFacet)) traceEntered(s, rng);
 }
@@ -193,7 +193,7 @@ void SpectralWalk::trace(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
 bool SpectralWalk::enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& path,
                          SpectralEntry& entry, bool splitEntryReflection,
                          const FacetNumbers* firstFacet) const {
-  State s(path, wavelengthCount_, options_.layerAbsorption);
+  State s(path, wavelengthCount_, options_.layerAbsorption, options_.melanosomeAbsorption);
   startPath(s, incidentDirection, rng);
   if (!enterFromAir(s, rng, splitEntryReflection, firstFacet)) return false;
   s.zeroOutcomes();  // the path pauses: its outcomes are the caller's (skin/exit_table_bundle.h)
@@ -208,7 +208,7 @@ bool SpectralWalk::enter(const Vec3& incidentDirection, Rng& rng, SpectralPath& 
 
 void SpectralWalk::traceEntered(const Vec3& transmittedDirection, Rng& rng,
                                 SpectralPath& path) const {
-  State s(path, wavelengthCount_, options_.layerAbsorption);
+  State s(path, wavelengthCount_, options_.layerAbsorption, options_.melanosomeAbsorption);
   startPath(s, transmittedDirection, rng);
   traceEntered(s, rng);
 }
@@ -349,10 +349,10 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
   if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
     work.resize(n);
     transmitted = work.data();
-    spectral_weights::stayLosses(n, s.stays.data(), s.stays.size(), slabs.data(),
-                                 melaninMuA_perCm_.data(), largestMelaninMuA_perCm_, ratio.data(),
-                                 transmitted, path.absorbed.data(),
-                                 path.absorbedInMelanosomes.data());
+    spectral_weights::stayLosses(
+        n, s.stays.data(), s.stays.size(), slabs.data(), melaninMuA_perCm_.data(),
+        largestMelaninMuA_perCm_, ratio.data(), transmitted, path.absorbed.data(),
+        options_.melanosomeAbsorption ? path.absorbedInMelanosomes.data() : nullptr);
   } else {
     work.resize(2 * n);
     transmitted = work.data();

@@ -83,7 +83,7 @@ struct SpectralPath {
   /// together; empty otherwise). Layer by layer, so that per-λ loops read contiguous values.
   std::vector<double> absorbed;
   /// The same places: the part of `absorbed` taken by melanin inside melanosomes (each stay's loss
-  /// shared by optical depth).
+  /// shared by optical depth; empty without WalkOptions::melanosomeAbsorption).
   std::vector<double> absorbedInMelanosomes;
 
   /// A path split at its first Rayleigh event (WalkOptions::splitFirstRayleigh): this path

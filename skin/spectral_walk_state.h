@@ -60,8 +60,9 @@ namespace hylios::skin {
 /// The walk's state for one path (the per-λ arrays live in the SpectralPath, reused across paths).
 class SpectralWalk::State : public spectral_walk_detail::PathProgress {
  public:
-  State(SpectralPath& p, std::size_t n, bool layers) : path(p), ratio(p.scratch), stays(p.stays) {
-    startPath(n, layers);
+  State(SpectralPath& p, std::size_t n, bool layers, bool melanosomes)
+      : path(p), ratio(p.scratch), stays(p.stays) {
+    startPath(n, layers, melanosomes);
     logDensity.assign(n, 0.0);
     proposalOffset.assign(n, 0.0);
   }
@@ -69,7 +70,8 @@ class SpectralWalk::State : public spectral_walk_detail::PathProgress {
   /// surface weight of its own, the progress and stays so far copied).
   State(SpectralPath& p, const State& other)
       : PathProgress(other), path(p), ratio(p.scratch), stays(p.stays) {
-    startPath(other.logDensity.size(), !other.path.absorbed.empty());
+    startPath(other.logDensity.size(), !other.path.absorbed.empty(),
+              !other.path.absorbedInMelanosomes.empty());
     p.events = other.path.events;
     p.exitOffsetXCm = other.path.exitOffsetXCm;
     p.exitOffsetYCm = other.path.exitOffsetYCm;
@@ -106,11 +108,11 @@ class SpectralWalk::State : public spectral_walk_detail::PathProgress {
  private:
   /// The path's per-λ outcomes sized for n wavelengths (SpectralWalk::finish writes all of them;
   /// a path that ends or pauses before, zeroOutcomes), no split, no stays.
-  void startPath(std::size_t n, bool layers) {
+  void startPath(std::size_t n, bool layers, bool melanosomes) {
     path.exitWeight.resize(n);
     path.absorbedTotal.resize(n);
     path.absorbed.resize(layers ? kLayerCount * n : 0);
-    path.absorbedInMelanosomes.resize(layers ? kLayerCount * n : 0);
+    path.absorbedInMelanosomes.resize(layers && melanosomes ? kLayerCount * n : 0);
     path.transmittedDirection.clear();
     path.surfaceWeight.clear();
     path.split = false;

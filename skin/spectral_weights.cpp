@@ -153,7 +153,9 @@ struct StayBooking {
   double* lostInMelanin;
 };
 
-template <int kTerms, bool kMelanin>
+/// kMelanin: the stay crossed melanosomes (their depth adds to the stay's); kBookMelanin: their
+/// share of the loss is booked as well.
+template <int kTerms, bool kMelanin, bool kBookMelanin>
 __attribute__((always_inline)) inline void bookStay(const StayBooking& b) {
   const double* __restrict muA = b.muA_perCm;
   const double* __restrict melaninMuA = b.melaninMuA_perCm;
@@ -169,17 +171,28 @@ __attribute__((always_inline)) inline void bookStay(const StayBooking& b) {
     if constexpr (kTerms > 0) {  // melanin's part as its depth × the loss per unit depth
       const double perDepth = absorbedFractionPerDepth<kTerms>(d);
       fraction = perDepth * d;
-      if (kMelanin) lostInMelaninHere = roulette * (before * perDepth) * melaninDepth;
+      if (kBookMelanin) lostInMelaninHere = roulette * (before * perDepth) * melaninDepth;
     } else {
       fraction = absorbedFraction<0>(d);
       // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
       const double share = d > 0 ? melaninDepth / (d > 0 ? d : 1.0) : 0.0;
-      if (kMelanin) lostInMelaninHere = roulette * (before * fraction) * share;
+      if (kBookMelanin) lostInMelaninHere = roulette * (before * fraction) * share;
     }
     lost[i] += roulette * (before * fraction);
-    if (kMelanin) lostInMelanin[i] += lostInMelaninHere;
+    if (kBookMelanin) lostInMelanin[i] += lostInMelaninHere;
     transmitted[i] = before - before * fraction;
   }
+}
+/// bookStay with the melanin flags of the stay (melanosomes crossed, their share booked).
+template <int kTerms>
+__attribute__((always_inline)) inline void bookStayOf(const StayBooking& b, bool melanin,
+                                                      bool bookMelanin) {
+  if (!melanin)
+    bookStay<kTerms, false, false>(b);
+  else if (bookMelanin)
+    bookStay<kTerms, true, true>(b);
+  else
+    bookStay<kTerms, true, false>(b);
 }
 }  // namespace
 
@@ -188,8 +201,11 @@ void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stay
                 const SlabAbsorption* slabs, const double* melaninMuA_perCm,
                 double largestMelaninMuA_perCm, const double* ratio, double* __restrict transmitted,
                 double* __restrict absorbed, double* __restrict inMelanin) {
+  const bool bookMelanin = inMelanin != nullptr;
   for (std::size_t i = 0; i < n; ++i) transmitted[i] = 1.0;
-  for (std::size_t j = 0; j < kLayerCount * n; ++j) absorbed[j] = inMelanin[j] = 0.0;
+  for (std::size_t j = 0; j < kLayerCount * n; ++j) absorbed[j] = 0.0;
+  if (bookMelanin)
+    for (std::size_t j = 0; j < kLayerCount * n; ++j) inMelanin[j] = 0.0;
   for (std::size_t k = 0; k < stayCount; ++k) {  // in the order the path made them
     const SpectralPath::Stay& stay = stays[k];
     const SlabAbsorption& slab = slabs[stay.slab];
@@ -201,28 +217,27 @@ void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stay
                               stay.roulette,
                               transmitted,
                               absorbed + slab.layer * n,
-                              inMelanin + slab.layer * n};
+                              bookMelanin ? inMelanin + slab.layer * n : nullptr};
     // The cheapest exact form of the absorbed fraction, chosen by a bound on every λ's depth.
     const double largest =
         slab.largestMuA_perCm * stay.cm + largestMelaninMuA_perCm * stay.melaninCm;
     const bool melanin = stay.melaninCm > 0;
     if (largest <= 1.0 / 64)
-      melanin ? bookStay<7, true>(booking) : bookStay<7, false>(booking);
+      bookStayOf<7>(booking, melanin, bookMelanin);
     else if (largest <= 1.0 / 8)
-      melanin ? bookStay<11, true>(booking) : bookStay<11, false>(booking);
+      bookStayOf<11>(booking, melanin, bookMelanin);
     else if (largest <= 0.5)
-      melanin ? bookStay<15, true>(booking) : bookStay<15, false>(booking);
+      bookStayOf<15>(booking, melanin, bookMelanin);
     else
-      melanin ? bookStay<0, true>(booking) : bookStay<0, false>(booking);
+      bookStayOf<0>(booking, melanin, bookMelanin);
   }
   // The MIS ratio is the same for every stay of the path: it multiplies the layers' sums once.
   for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
     double* __restrict lost = absorbed + layer * n;
+    for (std::size_t i = 0; i < n; ++i) lost[i] *= ratio[i];
+    if (!bookMelanin) continue;
     double* __restrict melanin = inMelanin + layer * n;
-    for (std::size_t i = 0; i < n; ++i) {
-      lost[i] *= ratio[i];
-      melanin[i] *= ratio[i];
-    }
+    for (std::size_t i = 0; i < n; ++i) melanin[i] *= ratio[i];
   }
 }
 

@@ -38,8 +38,9 @@ struct SlabAbsorption {
 /// product of the stays' transmittances), and for every layer ℓ: absorbed[ℓ·n + i] = Σ over the
 /// stays in ℓ of roulette·(T_before − T_after)·ratio[i], inMelanin[ℓ·n + i] = the same shares
 /// weighted by melanin depth / stay depth (both overwritten); absorbed and inMelanin hold
-/// kLayerCount·n values. Each stay's absorbed fraction 1 − e^{−d} is summed as its series where
-/// the bound largestMuA_perCm·cm + largestMelaninMuA_perCm·melaninCm on every λ's d is small.
+/// kLayerCount·n values, and inMelanin may be null (melanin's share not booked). Each stay's
+/// absorbed fraction 1 − e^{−d} is summed as its series where the bound largestMuA_perCm·cm +
+/// largestMelaninMuA_perCm·melaninCm on every λ's d is small.
 void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
                 const SlabAbsorption* slabs, const double* melaninMuA_perCm,
                 double largestMelaninMuA_perCm, const double* ratio, double* transmitted,

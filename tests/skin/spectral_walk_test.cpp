@@ -363,6 +363,35 @@ TEST(SpectralWalk, SameSeedSameResultAtOneAndTwoThreads) {
   }
 }
 
+TEST(SpectralWalk, MelanosomeAbsorptionOffLeavesEveryOtherOutcomeBitForBit) {
+  // Without melanin's share booked the paths and every other outcome are the same bits; the
+  // melanosome absorptance is then not scored (0), and booked it is positive and below the total.
+  const std::vector<SkinOptics> optics = opticsAt("S2", {400, 405, 410, 1500, 1505});
+  SpectralRunOptions booked;
+  booked.incidenceDeg = 20;
+  booked.rays = 2000;
+  SpectralRunOptions unbooked = booked;
+  unbooked.walk.melanosomeAbsorption = false;
+  const std::vector<SkinTally> with = simulateSkinSpectral(optics, booked);
+  const std::vector<SkinTally> without = simulateSkinSpectral(optics, unbooked);
+  for (std::size_t i = 0; i < optics.size(); ++i) {
+    EXPECT_EQ(with[i].reflectance().mean, without[i].reflectance().mean);
+    EXPECT_EQ(with[i].reflectance().standardError, without[i].reflectance().standardError);
+    for (Layer layer : kAllLayers)
+      EXPECT_EQ(with[i].absorptance(layer).mean, without[i].absorptance(layer).mean);
+    EXPECT_EQ(without[i].melanosomeAbsorptance().mean, 0.0);
+    EXPECT_GT(with[i].melanosomeAbsorptance().mean, 0.0);
+    EXPECT_LT(with[i].melanosomeAbsorptance().mean, with[i].absorptance().mean);
+  }
+  const std::vector<SkinOptics> visible(optics.begin(), optics.begin() + 3);  // θo > 0
+  SpectralWalk walk(visible, unbooked.walk);
+  SpectralPath path;
+  Rng rng(5);
+  walk.trace(incidentDirection(20), rng, path);
+  EXPECT_TRUE(path.absorbedInMelanosomes.empty());
+  EXPECT_EQ(path.absorbed.size(), kLayerCount * visible.size());
+}
+
 TEST(SpectralWalk, OneWavelengthAloneOrInABundleHasTheSameExpectation) {
   // A bundle of one carries no ratios; the same λ inside a bundle of 16 must agree within noise.
   const std::vector<SkinOptics> bundle = opticsAt(

@@ -116,6 +116,13 @@ TEST(SpectralWeights, StayLossesMatchTheStayByStayProductInEveryBranch) {
   }
   EXPECT_GT(inMelanin[4 * n + 0], 0.0);  // the papillary stays' melanin was booked
   EXPECT_EQ(inMelanin[4 * n + 2], 0.0);  // no melanin absorption at the third wavelength
+  // Without melanin's share (null): the transmittances and losses are the same bits.
+  std::vector<double> transmittedAlone(n), absorbedAlone(kLayerCount * n);
+  spectral_weights::stayLosses(n, stays.data(), stays.size(), slabs.data(), melaninMuA.data(),
+                               100.0, ratio.data(), transmittedAlone.data(), absorbedAlone.data(),
+                               nullptr);
+  EXPECT_EQ(transmittedAlone, transmitted);
+  EXPECT_EQ(absorbedAlone, absorbed);
 }
 
 TEST(SpectralWeights, PathDepthsSumEachSlabsAndMelaninsDepth) {
