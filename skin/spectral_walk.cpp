@@ -91,6 +91,7 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
     for (double mu : slab.muRayleigh_perCm) slab.logRayleigh.push_back(std::log(mu));
     slab.leastMuA_perCm = *std::min_element(slab.muA_perCm.begin(), slab.muA_perCm.end());
     slab.largestMuA_perCm = *std::max_element(slab.muA_perCm.begin(), slab.muA_perCm.end());
+    slab.muA_perCmSingle.assign(slab.muA_perCm.begin(), slab.muA_perCm.end());
     if (slab.muMelanosome_perCm > 0) slab.inverseMuMelanosomeCm = 1.0 / slab.muMelanosome_perCm;
     for (double mu : slab.muRayleigh_perCm) {
       const double scatter = slab.muMelanosome_perCm + mu;
@@ -143,6 +144,7 @@ SpectralWalk::SpectralWalk(const std::vector<SkinOptics>& bundle, WalkOptions op
   splitsRayleigh_ = splitsRayleigh_ && options.splitFirstRayleigh;
   leastMelaninMuA_perCm_ = *std::min_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
   largestMelaninMuA_perCm_ = *std::max_element(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
+  melaninMuA_perCmSingle_.assign(melaninMuA_perCm_.begin(), melaninMuA_perCm_.end());
   requireShared(options.roughSurface || !surfaceIndicesDiffer_,
                 "one surface index when the surface is smooth (a dispersive smooth interface "
                 "refracts each wavelength elsewhere: split the bundle)");
@@ -342,17 +344,22 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
     for (std::size_t i = 0; i < n; ++i) ratio[i] *= s.branchWeight;
   std::array<spectral_weights::SlabAbsorption, kLayerCount> slabs{};
   for (std::size_t k = 0; k < slabs_.size(); ++k)
-    slabs[k] = {slabs_[k].muA_perCm.data(), index(slabs_[k].layer), slabs_[k].largestMuA_perCm};
+    slabs[k] = {slabs_[k].muA_perCm.data(), slabs_[k].muA_perCmSingle.data(),
+                index(slabs_[k].layer), slabs_[k].largestMuA_perCm};
   // Workspace: the transmittance per λ (and the path depths without layer absorption).
   std::vector<double>& work = path.work;
   double* transmitted = nullptr;
   if (options_.layerAbsorption) {  // each stay's loss, in the order the path made them
     work.resize(n);
     transmitted = work.data();
+    path.singleWork.resize(2 * n);
+    const spectral_weights::MelaninAbsorption melanin{
+        melaninMuA_perCm_.data(), melaninMuA_perCmSingle_.data(), largestMelaninMuA_perCm_};
     spectral_weights::stayLosses(
-        n, s.stays.data(), s.stays.size(), slabs.data(), melaninMuA_perCm_.data(),
-        largestMelaninMuA_perCm_, ratio.data(), transmitted, path.absorbed.data(),
-        options_.melanosomeAbsorption ? path.absorbedInMelanosomes.data() : nullptr);
+        n, s.stays.data(), s.stays.size(), slabs.data(), melanin, ratio.data(), transmitted,
+        path.absorbed.data(),
+        options_.melanosomeAbsorption ? path.absorbedInMelanosomes.data() : nullptr,
+        path.singleWork.data());
   } else {
     work.resize(2 * n);
     transmitted = work.data();

@@ -102,6 +102,7 @@ struct SpectralPath {
   std::vector<Stay> stays;
   std::vector<double> scratch;
   std::vector<double> work;  ///< per-λ arrays of SpectralWalk::finish (skin/spectral_weights.h)
+  std::vector<float> singleWork;  ///< stayLosses' scratch
 };
 
 /// Uniform numbers in [0, 1) for the first facet of the rough surface a path from air meets, e.g. a
@@ -170,10 +171,11 @@ class SpectralWalk {
   struct Slab {
     Layer layer = Layer::StratumCorneum;
     double topCm = 0, bottomCm = 0;
-    double referenceIndex = 1;      ///< the index at the first wavelength (ratios are λ-free)
-    double muMelanosome_perCm = 0;  ///< Eq. 6 (λ-free)
-    bool hasRayleigh = false;       ///< some λ has a Rayleigh coefficient here
-    std::vector<double> muA_perCm;  ///< per λ
+    double referenceIndex = 1;           ///< the index at the first wavelength (ratios are λ-free)
+    double muMelanosome_perCm = 0;       ///< Eq. 6 (λ-free)
+    bool hasRayleigh = false;            ///< some λ has a Rayleigh coefficient here
+    std::vector<double> muA_perCm;       ///< per λ
+    std::vector<float> muA_perCmSingle;  ///< the same in float (stayLosses' series)
     std::vector<double> muRayleigh_perCm;  ///< per λ (empty without Rayleigh)
     std::vector<double> logRayleigh;       ///< per λ: log muRayleigh_perCm
     double leastMuA_perCm = 0;             ///< min over λ of muA_perCm
@@ -236,6 +238,7 @@ class SpectralWalk {
   std::vector<Slab> slabs_;
   std::vector<std::optional<Melanosomes>> melanosomes_;  ///< by slab
   std::vector<double> melaninMuA_perCm_;                 ///< per λ: inside melanosomes
+  std::vector<float> melaninMuA_perCmSingle_;            ///< the same in float
   double leastMelaninMuA_perCm_ = 0;
   double largestMelaninMuA_perCm_ = 0;
   std::vector<double> meanAngleRad_;           ///< per λ: θo of Algorithm 2

@@ -118,27 +118,16 @@ struct Expm1Series {
 };
 constexpr Expm1Series kExpm1Series;
 
-/// (1 − e^{−d})/d for kTerms > 0: absorbedFraction's series over d, the loss per unit depth, which
-/// splits a stay's loss among its absorbers without a division.
+/// (1 − e^{−d})/d by its series Σ_{1 ≤ j ≤ kTerms} (−1)^{j+1} d^{j−1}/j! (Horner), in single
+/// precision (16 lanes of AVX-512 where double has 8): the loss per unit depth, which splits a
+/// stay's loss among its absorbers without a division. Its truncation stays below 1e−9 relative
+/// for d ≤ 1/64 (4 terms), 1/8 (6) and 1/2 (9), under float's rounding (6e−8).
 template <int kTerms>
-__attribute__((always_inline)) inline double absorbedFractionPerDepth(double d) {
+__attribute__((always_inline)) inline float absorbedFractionPerDepthSingle(float d) {
   static_assert(kTerms > 0 && kTerms < kSeriesTerms);
-  double p = kExpm1Series.coefficient[kTerms];
-  for (int j = kTerms - 1; j >= 1; --j) p = p * d + kExpm1Series.coefficient[j];
+  float p = static_cast<float>(kExpm1Series.coefficient[kTerms]);
+  for (int j = kTerms - 1; j >= 1; --j) p = p * d + static_cast<float>(kExpm1Series.coefficient[j]);
   return p;
-}
-
-/// 1 − e^{−d} for 0 ≤ d: with kTerms > 0 its series Σ_{j ≤ kTerms} (−1)^{j+1} d^j/j! (Horner),
-/// whose truncation stays below 2e−17 relative for d ≤ 1/64 (7 terms), 1/8 (11) and 1/2 (15);
-/// with kTerms = 0, 1 − vectorExp(−d) (d > 1/2, no cancellation to speak of). The series costs
-/// about half of vectorExp and keeps a small loss's relative accuracy.
-template <int kTerms>
-__attribute__((always_inline)) inline double absorbedFraction(double d) {
-  if constexpr (kTerms == 0) {
-    return 1.0 - vectorExp(-d);
-  } else {
-    return absorbedFractionPerDepth<kTerms>(d) * d;
-  }
 }
 
 /// One stay of stayLosses: the path's transmittance per λ updated, the stay's loss (without the
@@ -146,17 +135,54 @@ __attribute__((always_inline)) inline double absorbedFraction(double d) {
 struct StayBooking {
   std::size_t n;
   const double* muA_perCm;
+  const float* muA_perCmSingle;
   const double* melaninMuA_perCm;
+  const float* melaninMuA_perCmSingle;
   double cm, melaninCm, roulette;
   double* transmitted;
   double* lost;
   double* lostInMelanin;
+  float* fraction;           ///< n: the stay's absorbed fraction per λ (series forms)
+  float* fractionInMelanin;  ///< n: melanin's part of it
 };
 
+/// The series forms (kTerms > 0) in two passes: the absorbed fraction per λ in single precision
+/// (relative error below 1e-6: the series' truncation below 1e-8 and a rounding per term), then
+/// the transmittance and the losses updated in double from it. A stay's fraction is small, so
+/// its relative error moves the transmittance by less than 1e-6 of the stay's loss.
 /// kMelanin: the stay crossed melanosomes (their depth adds to the stay's); kBookMelanin: their
 /// share of the loss is booked as well.
 template <int kTerms, bool kMelanin, bool kBookMelanin>
-__attribute__((always_inline)) inline void bookStay(const StayBooking& b) {
+__attribute__((always_inline)) inline void bookSeriesStay(const StayBooking& b) {
+  const float* __restrict muA = b.muA_perCmSingle;
+  const float* __restrict melaninMuA = b.melaninMuA_perCmSingle;
+  float* __restrict fraction = b.fraction;
+  float* __restrict fractionInMelanin = b.fractionInMelanin;
+  const float cm = static_cast<float>(b.cm), melaninCm = static_cast<float>(b.melaninCm);
+  for (std::size_t i = 0; i < b.n; ++i) {
+    const float melaninDepth = kMelanin ? melaninMuA[i] * melaninCm : 0.0f;
+    const float d = muA[i] * cm + melaninDepth;
+    const float perDepth = absorbedFractionPerDepthSingle<kTerms>(d);
+    fraction[i] = perDepth * d;  // melanin's part: its depth × the loss per unit depth
+    if (kBookMelanin) fractionInMelanin[i] = perDepth * melaninDepth;
+  }
+  double* __restrict transmitted = b.transmitted;
+  double* __restrict lost = b.lost;
+  double* __restrict lostInMelanin = b.lostInMelanin;
+  const double roulette = b.roulette;
+  for (std::size_t i = 0; i < b.n; ++i) {
+    const double before = transmitted[i];
+    const double loss = before * static_cast<double>(fraction[i]);
+    lost[i] += roulette * loss;
+    if (kBookMelanin)
+      lostInMelanin[i] += roulette * (before * static_cast<double>(fractionInMelanin[i]));
+    transmitted[i] = before - loss;
+  }
+}
+
+/// A stay too deep for the series (some λ's depth above 1/2): 1 − e^{−d} in double.
+template <bool kMelanin, bool kBookMelanin>
+__attribute__((always_inline)) inline void bookDeepStay(const StayBooking& b) {
   const double* __restrict muA = b.muA_perCm;
   const double* __restrict melaninMuA = b.melaninMuA_perCm;
   double* __restrict transmitted = b.transmitted;
@@ -167,40 +193,43 @@ __attribute__((always_inline)) inline void bookStay(const StayBooking& b) {
     const double melaninDepth = kMelanin ? melaninMuA[i] * melaninCm : 0.0;
     const double d = muA[i] * cm + melaninDepth;
     const double before = transmitted[i];
-    double fraction, lostInMelaninHere = 0.0;
-    if constexpr (kTerms > 0) {  // melanin's part as its depth × the loss per unit depth
-      const double perDepth = absorbedFractionPerDepth<kTerms>(d);
-      fraction = perDepth * d;
-      if (kBookMelanin) lostInMelaninHere = roulette * (before * perDepth) * melaninDepth;
-    } else {
-      fraction = absorbedFraction<0>(d);
-      // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
-      const double share = d > 0 ? melaninDepth / (d > 0 ? d : 1.0) : 0.0;
-      if (kBookMelanin) lostInMelaninHere = roulette * (before * fraction) * share;
-    }
+    const double fraction = 1.0 - vectorExp(-d);  // d > 1/2: no cancellation to speak of
+    // The share of melanin (0 when the stay absorbed nothing; the division is then not used).
+    const double share = d > 0 ? melaninDepth / (d > 0 ? d : 1.0) : 0.0;
+    if (kBookMelanin) lostInMelanin[i] += roulette * (before * fraction) * share;
     lost[i] += roulette * (before * fraction);
-    if (kBookMelanin) lostInMelanin[i] += lostInMelaninHere;
     transmitted[i] = before - before * fraction;
   }
 }
-/// bookStay with the melanin flags of the stay (melanosomes crossed, their share booked).
+
+/// One stay booked in its form (kTerms series terms, or 0: the exponential) with the stay's
+/// melanin flags (melanosomes crossed, their share booked).
 template <int kTerms>
-__attribute__((always_inline)) inline void bookStayOf(const StayBooking& b, bool melanin,
-                                                      bool bookMelanin) {
-  if (!melanin)
-    bookStay<kTerms, false, false>(b);
-  else if (bookMelanin)
-    bookStay<kTerms, true, true>(b);
-  else
-    bookStay<kTerms, true, false>(b);
+__attribute__((always_inline)) inline void bookStay(const StayBooking& b, bool melanin,
+                                                    bool bookMelanin) {
+  if constexpr (kTerms > 0) {
+    if (!melanin)
+      bookSeriesStay<kTerms, false, false>(b);
+    else if (bookMelanin)
+      bookSeriesStay<kTerms, true, true>(b);
+    else
+      bookSeriesStay<kTerms, true, false>(b);
+  } else {
+    if (!melanin)
+      bookDeepStay<false, false>(b);
+    else if (bookMelanin)
+      bookDeepStay<true, true>(b);
+    else
+      bookDeepStay<true, false>(b);
+  }
 }
 }  // namespace
 
 HYLIOS_VECTOR_CLONES
 void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
-                const SlabAbsorption* slabs, const double* melaninMuA_perCm,
-                double largestMelaninMuA_perCm, const double* ratio, double* __restrict transmitted,
-                double* __restrict absorbed, double* __restrict inMelanin) {
+                const SlabAbsorption* slabs, const MelaninAbsorption& melanin, const double* ratio,
+                double* __restrict transmitted, double* __restrict absorbed,
+                double* __restrict inMelanin, float* work) {
   const bool bookMelanin = inMelanin != nullptr;
   for (std::size_t i = 0; i < n; ++i) transmitted[i] = 1.0;
   for (std::size_t j = 0; j < kLayerCount * n; ++j) absorbed[j] = 0.0;
@@ -211,33 +240,37 @@ void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stay
     const SlabAbsorption& slab = slabs[stay.slab];
     const StayBooking booking{n,
                               slab.muA_perCm,
-                              melaninMuA_perCm,
+                              slab.muA_perCmSingle,
+                              melanin.muA_perCm,
+                              melanin.muA_perCmSingle,
                               stay.cm,
                               stay.melaninCm,
                               stay.roulette,
                               transmitted,
                               absorbed + slab.layer * n,
-                              bookMelanin ? inMelanin + slab.layer * n : nullptr};
-    // The cheapest exact form of the absorbed fraction, chosen by a bound on every λ's depth.
+                              bookMelanin ? inMelanin + slab.layer * n : nullptr,
+                              work,
+                              work + n};
+    // The cheapest form of the absorbed fraction, chosen by a bound on every λ's depth.
     const double largest =
-        slab.largestMuA_perCm * stay.cm + largestMelaninMuA_perCm * stay.melaninCm;
-    const bool melanin = stay.melaninCm > 0;
+        slab.largestMuA_perCm * stay.cm + melanin.largestMuA_perCm * stay.melaninCm;
+    const bool crossedMelanin = stay.melaninCm > 0;
     if (largest <= 1.0 / 64)
-      bookStayOf<7>(booking, melanin, bookMelanin);
+      bookStay<4>(booking, crossedMelanin, bookMelanin);
     else if (largest <= 1.0 / 8)
-      bookStayOf<11>(booking, melanin, bookMelanin);
+      bookStay<6>(booking, crossedMelanin, bookMelanin);
     else if (largest <= 0.5)
-      bookStayOf<15>(booking, melanin, bookMelanin);
+      bookStay<9>(booking, crossedMelanin, bookMelanin);
     else
-      bookStayOf<0>(booking, melanin, bookMelanin);
+      bookStay<0>(booking, crossedMelanin, bookMelanin);
   }
   // The MIS ratio is the same for every stay of the path: it multiplies the layers' sums once.
   for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
     double* __restrict lost = absorbed + layer * n;
     for (std::size_t i = 0; i < n; ++i) lost[i] *= ratio[i];
     if (!bookMelanin) continue;
-    double* __restrict melanin = inMelanin + layer * n;
-    for (std::size_t i = 0; i < n; ++i) melanin[i] *= ratio[i];
+    double* __restrict lostInMelanin = inMelanin + layer * n;
+    for (std::size_t i = 0; i < n; ++i) lostInMelanin[i] *= ratio[i];
   }
 }
 

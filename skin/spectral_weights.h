@@ -29,9 +29,17 @@ namespace hylios::skin::spectral_weights {
 
 /// What stayLosses reads of the walk: per slab its absorption coefficient per λ and its layer.
 struct SlabAbsorption {
-  const double* muA_perCm;  ///< n values
-  std::size_t layer;        ///< index(layer) < kLayerCount
-  double largestMuA_perCm;  ///< max of muA_perCm (bounds a stay's depth: stayLosses' series)
+  const double* muA_perCm;       ///< n values
+  const float* muA_perCmSingle;  ///< the same rounded to float (the series' depths; stayLosses)
+  std::size_t layer;             ///< index(layer) < kLayerCount
+  double largestMuA_perCm;       ///< max of muA_perCm (bounds a stay's depth: stayLosses' series)
+};
+
+/// Melanin's coefficient inside melanosomes per λ, in both precisions, and its largest value.
+struct MelaninAbsorption {
+  const double* muA_perCm;
+  const float* muA_perCmSingle;
+  double largestMuA_perCm;
 };
 
 /// Walks the stays in order. On return transmitted[i] = exp(−depth_i) of the whole path (as the
@@ -39,12 +47,13 @@ struct SlabAbsorption {
 /// stays in ℓ of roulette·(T_before − T_after)·ratio[i], inMelanin[ℓ·n + i] = the same shares
 /// weighted by melanin depth / stay depth (both overwritten); absorbed and inMelanin hold
 /// kLayerCount·n values, and inMelanin may be null (melanin's share not booked). Each stay's
-/// absorbed fraction 1 − e^{−d} is summed as its series where the bound largestMuA_perCm·cm +
-/// largestMelaninMuA_perCm·melaninCm on every λ's d is small.
+/// absorbed fraction 1 − e^{−d} is its series in single precision (relative error below 1e−6)
+/// where the bound largestMuA_perCm·cm + melanin.largestMuA_perCm·melaninCm on every λ's d is at
+/// most 1/2, else 1 − exp(−d) in double; the transmittances and losses accumulate in double.
+/// work: 2n floats of scratch.
 void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
-                const SlabAbsorption* slabs, const double* melaninMuA_perCm,
-                double largestMelaninMuA_perCm, const double* ratio, double* transmitted,
-                double* absorbed, double* inMelanin);
+                const SlabAbsorption* slabs, const MelaninAbsorption& melanin, const double* ratio,
+                double* transmitted, double* absorbed, double* inMelanin, float* work);
 
 /// depth[i] = Σ_k slabs[k].muA_perCm[i]·pathCm[k] + melaninMuA_perCm[i]·melaninCm[k].
 void pathDepths(std::size_t n, std::size_t slabCount, const SlabAbsorption* slabs,

@@ -4,9 +4,11 @@
 // angle and for matched indices; the log kernel adds vectorLog of the same values (≤ 2 ulp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "skin/core/random.h"
 #include "skin/fresnel.h"
 #include "skin/spectral_weights.h"
 
@@ -70,65 +72,139 @@ void expectRelativelyNear(double actual, double expected, double relative, const
   EXPECT_NEAR(actual, expected, relative * std::fabs(expected) + 1e-300)
       << what << " [" << j << "]";
 }
+
+/// stayLosses over `stays` with slabs of coefficients `muA` (one vector per slab, layer = slab
+/// index · 2), melanin `melaninMuA`, and MIS ratios `ratio`: its outputs, and the reference's.
+struct StayLossesRun {
+  std::vector<double> transmitted, absorbed, inMelanin;
+};
+StayLossesRun runStayLosses(const std::vector<std::vector<double>>& muA,
+                            const std::vector<double>& melaninMuA, const std::vector<double>& ratio,
+                            const std::vector<SpectralPath::Stay>& stays, bool bookMelanin,
+                            std::vector<spectral_weights::SlabAbsorption>* slabsOut = nullptr) {
+  const std::size_t n = ratio.size();
+  std::vector<std::vector<float>> single;
+  single.reserve(muA.size());
+  std::vector<spectral_weights::SlabAbsorption> slabs;
+  for (std::size_t k = 0; k < muA.size(); ++k) {
+    single.emplace_back(muA[k].begin(), muA[k].end());
+    slabs.push_back({muA[k].data(), single.back().data(), 2 * k % kLayerCount,
+                     *std::max_element(muA[k].begin(), muA[k].end())});
+  }
+  const std::vector<float> melaninSingle(melaninMuA.begin(), melaninMuA.end());
+  const spectral_weights::MelaninAbsorption melanin{
+      melaninMuA.data(), melaninSingle.data(),
+      *std::max_element(melaninMuA.begin(), melaninMuA.end())};
+  StayLossesRun run{std::vector<double>(n), std::vector<double>(kLayerCount * n),
+                    std::vector<double>(kLayerCount * n)};
+  std::vector<float> work(2 * n);
+  spectral_weights::stayLosses(n, stays.data(), stays.size(), slabs.data(), melanin, ratio.data(),
+                               run.transmitted.data(), run.absorbed.data(),
+                               bookMelanin ? run.inMelanin.data() : nullptr, work.data());
+  if (slabsOut) {  // for the reference, which reads the double coefficients only
+    for (auto& slab : slabs) slab.muA_perCmSingle = nullptr;
+    *slabsOut = slabs;
+  }
+  return run;
+}
+
+void expectNearReference(const StayLossesRun& run, const ReferenceLosses& expected,
+                         double relative) {
+  for (std::size_t i = 0; i < run.transmitted.size(); ++i)
+    expectRelativelyNear(run.transmitted[i], expected.transmitted[i], relative, "transmitted", i);
+  for (std::size_t j = 0; j < run.absorbed.size(); ++j) {
+    expectRelativelyNear(run.absorbed[j], expected.absorbed[j], relative, "absorbed", j);
+    expectRelativelyNear(run.inMelanin[j], expected.inMelanin[j], relative, "in melanin", j);
+  }
+}
 }  // namespace
 
 TEST(SpectralWeights, OneStayLosesOneMinusItsTransmittance) {
-  // Hand values: μa = 2 /cm over 0.5 cm is a depth of 1, so T = e^{−1} and the loss 1 − e^{−1}.
-  const std::vector<double> muA{2.0}, melaninMuA{0.0}, ratio{1.0};
-  const spectral_weights::SlabAbsorption slab{muA.data(), 3, 2.0};
-  const SpectralPath::Stay stay{0, 0.5, 0.0, 1.0};
-  double transmitted = 0;
-  std::vector<double> absorbed(kLayerCount, -1.0), inMelanin(kLayerCount, -1.0);
-  spectral_weights::stayLosses(1, &stay, 1, &slab, melaninMuA.data(), 0.0, ratio.data(),
-                               &transmitted, absorbed.data(), inMelanin.data());
-  EXPECT_NEAR(transmitted, 0.36787944117144233, 1e-16);
+  // Hand values: μa = 2 /cm over 0.5 cm is a depth of 1 (the exponential form, in double), so
+  // T = e^{−1} and the loss 1 − e^{−1}.
+  const std::vector<SpectralPath::Stay> stay{{0, 0.5, 0.0, 1.0}};
+  const StayLossesRun run = runStayLosses({{2.0}}, {0.0}, {1.0}, stay, true);
+  EXPECT_NEAR(run.transmitted[0], 0.36787944117144233, 1e-16);
   for (std::size_t layer = 0; layer < kLayerCount; ++layer) {
-    EXPECT_NEAR(absorbed[layer], layer == 3 ? 0.63212055882855767 : 0.0, 1e-16) << layer;
-    EXPECT_EQ(inMelanin[layer], 0.0) << layer;
+    EXPECT_NEAR(run.absorbed[layer], layer == 0 ? 0.63212055882855767 : 0.0, 1e-16) << layer;
+    EXPECT_EQ(run.inMelanin[layer], 0.0) << layer;
   }
+  // A shallow stay (the series, in float): depth 0.01, loss 1 − e^{−0.01} within 1e−6 relative.
+  const std::vector<SpectralPath::Stay> shallow{{0, 0.005, 0.0, 1.0}};
+  const StayLossesRun series = runStayLosses({{2.0}}, {0.0}, {1.0}, shallow, true);
+  EXPECT_NEAR(series.absorbed[0], 0.009950166250831946, 1e-6 * 0.00995);
+  EXPECT_NEAR(series.transmitted[0], 0.9900498337491681, 1e-6 * 0.00995);
 }
 
 TEST(SpectralWeights, StayLossesMatchTheStayByStayProductInEveryBranch) {
-  // Three wavelengths; four stays whose largest depth falls in each of the kernel's four forms of
-  // 1 − e^{−d} (the series to 7, 11 and 15 terms, and the exponential), with and without melanin,
-  // roulette factors and MIS ratios other than 1.
-  const std::size_t n = 3;
-  const std::vector<double> sc{0.01, 2.0, 40.0}, papillary{0.5, 0.0, 3.0};
-  const std::vector<double> melaninMuA{100.0, 50.0, 0.0}, ratio{1.0, 0.5, 2.0};
-  const std::vector<spectral_weights::SlabAbsorption> slabs{{sc.data(), 0, 40.0},
-                                                            {papillary.data(), 4, 3.0}};
+  // 19 wavelengths (a full 16-lane block and a remainder); four stays whose largest depth falls in
+  // each of the kernel's four forms of 1 − e^{−d} (the float series to 4, 6 and 9 terms, and the
+  // exponential in double), with and without melanin, roulette factors and MIS ratios other than
+  // 1. The float series' fractions are within 1e−6 relative, and so is every output.
+  const std::size_t n = 19;
+  std::vector<double> sc(n), papillary(n), melaninMuA(n), ratio(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = static_cast<double>(i) / (n - 1);
+    sc[i] = 0.01 + 39.99 * x * x;
+    papillary[i] = 3.0 * (1.0 - x);
+    melaninMuA[i] = i % 5 == 4 ? 0.0 : 100.0 * (1.0 - 0.5 * x);
+    ratio[i] = 0.5 + 1.5 * x;
+  }
   const std::vector<SpectralPath::Stay> stays{{0, 1e-4, 0.0, 1.0},    // largest 0.004
                                               {1, 0.03, 1e-4, 2.0},   // 0.09 + 0.01
                                               {0, 0.01, 0.0, 1.0},    // 0.4
                                               {1, 0.5, 0.002, 4.0}};  // 1.5 + 0.2
-  std::vector<double> transmitted(n), absorbed(kLayerCount * n), inMelanin(kLayerCount * n);
-  spectral_weights::stayLosses(n, stays.data(), stays.size(), slabs.data(), melaninMuA.data(),
-                               100.0, ratio.data(), transmitted.data(), absorbed.data(),
-                               inMelanin.data());
+  const std::vector<std::vector<double>> muA{sc, papillary};          // alive for the reference
+  std::vector<spectral_weights::SlabAbsorption> slabs;
+  const StayLossesRun run = runStayLosses(muA, melaninMuA, ratio, stays, true, &slabs);
   const ReferenceLosses expected = referenceLosses(n, stays, slabs, melaninMuA, ratio);
-  // The series' truncation is below 2e-17 relative and vectorExp within 3 ulp; a few roundings per
-  // stay: 1e-14 relative.
-  for (std::size_t i = 0; i < n; ++i)
-    expectRelativelyNear(transmitted[i], expected.transmitted[i], 1e-14, "transmitted", i);
-  for (std::size_t j = 0; j < kLayerCount * n; ++j) {
-    expectRelativelyNear(absorbed[j], expected.absorbed[j], 1e-14, "absorbed", j);
-    expectRelativelyNear(inMelanin[j], expected.inMelanin[j], 1e-14, "in melanin", j);
-  }
-  EXPECT_GT(inMelanin[4 * n + 0], 0.0);  // the papillary stays' melanin was booked
-  EXPECT_EQ(inMelanin[4 * n + 2], 0.0);  // no melanin absorption at the third wavelength
+  expectNearReference(run, expected, 1e-6);
+  EXPECT_GT(run.inMelanin[2 * n + 0], 0.0);  // the papillary stays' melanin was booked
+  EXPECT_EQ(run.inMelanin[2 * n + 4], 0.0);  // no melanin absorption at the fifth wavelength
   // Without melanin's share (null): the transmittances and losses are the same bits.
-  std::vector<double> transmittedAlone(n), absorbedAlone(kLayerCount * n);
-  spectral_weights::stayLosses(n, stays.data(), stays.size(), slabs.data(), melaninMuA.data(),
-                               100.0, ratio.data(), transmittedAlone.data(), absorbedAlone.data(),
-                               nullptr);
-  EXPECT_EQ(transmittedAlone, transmitted);
-  EXPECT_EQ(absorbedAlone, absorbed);
+  const StayLossesRun alone = runStayLosses(muA, melaninMuA, ratio, stays, false);
+  EXPECT_EQ(alone.transmitted, run.transmitted);
+  EXPECT_EQ(alone.absorbed, run.absorbed);
+}
+
+TEST(SpectralWeights, StayLossesStayWithinOneMillionthOverALongPath) {
+  // 400 stays of random depths up to 0.45 in three slabs (the series forms, where the float
+  // rounding lies): each layer's loss within 1e−6 relative of the double reference, and the
+  // transmittance after all of them (total depth D ≈ 8–60) within 1e−6 + 1e−7·D relative: a
+  // stay's rounding (≈ 3e−8 of its fraction) moves T by that share of the stay's depth, so T's
+  // error grows with D while T itself falls as e^{−D} (its absolute error stays below 1e−8).
+  const std::size_t n = 24;
+  std::vector<std::vector<double>> muA(3, std::vector<double>(n));
+  std::vector<double> melaninMuA(n), ratio(n, 1.0);
+  Rng rng(26, 7);
+  for (auto& slab : muA)
+    for (double& mu : slab) mu = 0.3 * rng.uniform();
+  for (double& mu : melaninMuA) mu = 10.0 * rng.uniform();
+  std::vector<SpectralPath::Stay> stays;
+  for (int k = 0; k < 400; ++k)
+    stays.push_back({static_cast<std::size_t>(k % 3), rng.uniform(), 0.01 * rng.uniform(),
+                     1.0 + std::floor(k / 100.0)});
+  std::vector<spectral_weights::SlabAbsorption> slabs;
+  const StayLossesRun run = runStayLosses(muA, melaninMuA, ratio, stays, true, &slabs);
+  const ReferenceLosses expected = referenceLosses(n, stays, slabs, melaninMuA, ratio);
+  double deepest = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double depth = -std::log(expected.transmitted[i]);
+    deepest = std::max(deepest, depth);
+    expectRelativelyNear(run.transmitted[i], expected.transmitted[i], 1e-6 + 1e-7 * depth,
+                         "transmitted", i);
+  }
+  EXPECT_GT(deepest, 40.0);  // deep members, where the relative error builds up most
+  for (std::size_t j = 0; j < run.absorbed.size(); ++j) {
+    expectRelativelyNear(run.absorbed[j], expected.absorbed[j], 1e-6, "absorbed", j);
+    expectRelativelyNear(run.inMelanin[j], expected.inMelanin[j], 1e-6, "in melanin", j);
+  }
 }
 
 TEST(SpectralWeights, PathDepthsSumEachSlabsAndMelaninsDepth) {
   const std::vector<double> first{1.0, 2.0}, second{3.0, 4.0}, melaninMuA{10.0, 20.0};
-  const std::vector<spectral_weights::SlabAbsorption> slabs{{first.data(), 0, 2.0},
-                                                            {second.data(), 1, 4.0}};
+  const std::vector<spectral_weights::SlabAbsorption> slabs{{first.data(), nullptr, 0, 2.0},
+                                                            {second.data(), nullptr, 1, 4.0}};
   const std::vector<double> pathCm{0.5, 0.25}, melaninCm{0.1, 0.0};
   std::vector<double> depth(2);
   spectral_weights::pathDepths(2, 2, slabs.data(), pathCm.data(), melaninCm.data(),
