@@ -14,8 +14,8 @@ namespace {
 constexpr double kAirRefractiveIndex = 1.0;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// Free path for total coefficient mu (Eq. 1); infinite when nothing attenuates. 1 − u is exact for
-/// the Rng's multiples of 2⁻⁵³, so log(1 − u) equals log1p(−u) and is cheaper.
+/// Free path for total coefficient mu (Eq. 1): a standard exponential (the ziggurat) over mu;
+/// infinite when nothing attenuates.
 double sampleFreePathCm(double mu_perCm, Rng& rng) {
   return mu_perCm > 0 ? sampleStandardExponential(rng) / mu_perCm : kInfinity;
 }

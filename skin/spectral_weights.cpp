@@ -105,7 +105,10 @@ __attribute__((always_inline)) inline void refractionDensities(
 }
 
 /// (−1)^{j+1}/j!, the coefficients of 1 − e^{−d} = Σ_{j ≥ 1} (−1)^{j+1} d^j/j!.
-constexpr int kSeriesTerms = 16;
+constexpr int kSeriesTerms = 10;
+/// Coefficients above it stay in double: the series' float form needs them and every depth
+/// μa·cm within float's range (a larger coefficient sends its stays to the double form).
+constexpr double kLargestSingleMuA_perCm = 1e30;
 struct Expm1Series {
   double coefficient[kSeriesTerms] = {};
   constexpr Expm1Series() {
@@ -255,14 +258,16 @@ void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stay
     const double largest =
         slab.largestMuA_perCm * stay.cm + melanin.largestMuA_perCm * stay.melaninCm;
     const bool crossedMelanin = stay.melaninCm > 0;
-    if (largest <= 1.0 / 64)
+    const bool single = slab.largestMuA_perCm <= kLargestSingleMuA_perCm &&
+                        melanin.largestMuA_perCm <= kLargestSingleMuA_perCm;
+    if (!single || largest > 0.5)
+      bookStay<0>(booking, crossedMelanin, bookMelanin);
+    else if (largest <= 1.0 / 64)
       bookStay<4>(booking, crossedMelanin, bookMelanin);
     else if (largest <= 1.0 / 8)
       bookStay<6>(booking, crossedMelanin, bookMelanin);
-    else if (largest <= 0.5)
-      bookStay<9>(booking, crossedMelanin, bookMelanin);
     else
-      bookStay<0>(booking, crossedMelanin, bookMelanin);
+      bookStay<9>(booking, crossedMelanin, bookMelanin);
   }
   // The MIS ratio is the same for every stay of the path: it multiplies the layers' sums once.
   for (std::size_t layer = 0; layer < kLayerCount; ++layer) {

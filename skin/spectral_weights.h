@@ -49,7 +49,8 @@ struct MelaninAbsorption {
 /// kLayerCount·n values, and inMelanin may be null (melanin's share not booked). Each stay's
 /// absorbed fraction 1 − e^{−d} is its series in single precision (relative error below 1e−6)
 /// where the bound largestMuA_perCm·cm + melanin.largestMuA_perCm·melaninCm on every λ's d is at
-/// most 1/2, else 1 − exp(−d) in double; the transmittances and losses accumulate in double.
+/// most 1/2 (and no coefficient exceeds 1e30 /cm), else 1 − exp(−d) in double; the transmittances
+/// and losses accumulate in double.
 /// work: 2n floats of scratch.
 void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stayCount,
                 const SlabAbsorption* slabs, const MelaninAbsorption& melanin, const double* ratio,

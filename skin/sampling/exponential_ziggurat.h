@@ -1,7 +1,7 @@
 // Standard exponential variates by the ziggurat method (G. Marsaglia and W. W. Tsang, "The
-// ziggurat method for generating random variables", J. Stat. Softw. 5(8), 2000), for the spectral
-// walk's free paths and Algorithm 2's Gamma(2) proposal: a log per draw was a tenth of the walk's
-// time (docs/benchmarks.md, session 26).
+// ziggurat method for generating random variables", J. Stat. Softw. 5(8), 2000), for both walks'
+// free paths and Algorithm 2's Gamma(2) proposal: a log per draw was a tenth of the spectral
+// walk's time in the θo ramp (docs/benchmarks.md, session 26).
 //
 // The area under e^{−x} is cut into 256 layers of equal area v: layer 0 is the rectangle
 // [0, r) × [0, e^{−r}) with the tail beyond r, layer i ≥ 1 the rectangle [0, x_i) × [e^{−x_i},

@@ -167,6 +167,18 @@ TEST(SpectralWeights, StayLossesMatchTheStayByStayProductInEveryBranch) {
   EXPECT_EQ(alone.absorbed, run.absorbed);
 }
 
+TEST(SpectralWeights, StayLossesKeepCoefficientsBeyondFloatInDouble) {
+  // μa = 1e35 /cm over 2e−36 cm is a depth of 0.2, a series stay, but 1e35 is not a float: the
+  // stay takes the double form, exact to rounding (T = e^{−0.2}, no infinity or NaN).
+  const std::vector<std::vector<double>> muA{{1e35, 1.0}};
+  const std::vector<SpectralPath::Stay> stay{{0, 2e-36, 0.0, 1.0}};
+  std::vector<spectral_weights::SlabAbsorption> slabs;
+  const StayLossesRun run = runStayLosses(muA, {0.0, 0.0}, {1.0, 1.0}, stay, true, &slabs);
+  EXPECT_NEAR(run.transmitted[0], std::exp(-0.2), 1e-15);
+  EXPECT_NEAR(run.absorbed[0], -std::expm1(-0.2), 1e-15);
+  EXPECT_NEAR(run.transmitted[1], std::exp(-2e-36), 1e-15);
+}
+
 TEST(SpectralWeights, StayLossesStayWithinOneMillionthOverALongPath) {
   // 400 stays of random depths up to 0.45 in three slabs (the series forms, where the float
   // rounding lies): each layer's loss within 1e−6 relative of the double reference, and the
