@@ -74,7 +74,8 @@ void expectRelativelyNear(double actual, double expected, double relative, const
 }
 
 /// stayLosses over `stays` with slabs of coefficients `muA` (one vector per slab, layer = slab
-/// index · 2), melanin `melaninMuA`, and MIS ratios `ratio`: its outputs, and the reference's.
+/// index · 2), melanin `melaninMuA`, and MIS ratios `ratio`: its outputs, and in slabsOut the
+/// slabs for referenceLosses (valid while `muA` lives).
 struct StayLossesRun {
   std::vector<double> transmitted, absorbed, inMelanin;
 };
