@@ -3,8 +3,9 @@
 // skin/sampling/exponential_polar_sampling.h and skin/sampling/surface_normal_sampling.h solve a
 // CDF by Newton steps and cost ~2,500 instructions) return the cosine and sine of θ directly, which
 // is what a perturbed direction needs. A uniform point in the unit disk (from the square,
-// acceptance π/4) gives a uniform azimuth's cosine and sine without trigonometric calls, and with
-// Malley's construction (lift the disk point to the hemisphere) a cosine-weighted direction.
+// acceptance π/4) gives a uniform azimuth's cosine and sine without trigonometric calls or square
+// roots (its doubled angle), and with Malley's construction (lift the disk point to the
+// hemisphere) a cosine-weighted direction.
 //
 // Algorithm 2's law, p(θ) ∝ e^{−θ/θo} sinθ on [0, π]: proposal Gamma(2, θo), density
 // ∝ θ e^{−θ/θo} on [0, ∞), drawn as θo·(E1 + E2) with E standard exponentials from the ziggurat
@@ -46,7 +47,8 @@ inline DiskPoint sampleUnitDisk(Rng& rng) {
   }
 }
 
-/// cos φ and sin φ of an azimuth φ uniform on [0, 2π).
+/// cos φ and sin φ of an azimuth φ uniform on [0, 2π): twice the angle of a uniform disk point,
+/// (x² − y², 2xy)/r² (von Neumann's doubled angle: uniform again, and no square root).
 struct Azimuth {
   double cosPhi = 1, sinPhi = 0;
 };
@@ -54,8 +56,9 @@ inline Azimuth sampleAzimuth(Rng& rng) {
   for (;;) {
     const DiskPoint p = sampleUnitDisk(rng);
     if (p.radiusSquared > 1e-200) {  // the direction of the centre is undefined
-      const double inverseRadius = 1.0 / std::sqrt(p.radiusSquared);
-      return {p.x * inverseRadius, p.y * inverseRadius};
+      const double inverseRadiusSquared = 1.0 / p.radiusSquared;
+      return {(p.x - p.y) * (p.x + p.y) * inverseRadiusSquared,
+              2.0 * p.x * p.y * inverseRadiusSquared};
     }
   }
 }
