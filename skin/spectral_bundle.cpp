@@ -6,21 +6,25 @@
 #include <stdexcept>
 
 namespace hylios::skin {
-double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk) {
-  if (!walk.rayleigh) return 0;
+namespace {
+/// Σ coefficient·thickness over the walked layers (down to walk.deepestLayer): the optical depth
+/// of one coefficient of LayerOptics at normal incidence.
+double walkedDepth(const SkinOptics& optics, const WalkOptions& walk,
+                   double LayerOptics::*coefficient_perCm) {
   double depth = 0;
   for (Layer layer : kAllLayers)
     if (index(layer) <= index(walk.deepestLayer))
-      depth += optics[layer].muRayleigh_perCm * optics[layer].thicknessCm;
+      depth += optics[layer].*coefficient_perCm * optics[layer].thicknessCm;
   return depth;
+}
+}  // namespace
+
+double rayleighDepth(const SkinOptics& optics, const WalkOptions& walk) {
+  return walk.rayleigh ? walkedDepth(optics, walk, &LayerOptics::muRayleigh_perCm) : 0.0;
 }
 
 double absorptionDepth(const SkinOptics& optics, const WalkOptions& walk) {
-  double depth = 0;
-  for (Layer layer : kAllLayers)
-    if (index(layer) <= index(walk.deepestLayer))
-      depth += optics[layer].muATotal_perCm * optics[layer].thicknessCm;
-  return depth;
+  return walkedDepth(optics, walk, &LayerOptics::muATotal_perCm);
 }
 
 namespace {
