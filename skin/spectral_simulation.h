@@ -31,7 +31,7 @@ struct SpectralRunOptions {
 /// profiles): run's incidence, rays, seed, walk and tally, with each melanosome's internal path
 /// drawn from the path-length table, the surface reflection at entry scored as an expected
 /// value, heroes in shares by law (WalkOptions::heroSharesByLaw), bundles bounded to a Rayleigh
-/// spread of 1.2, a θo spread of 0.6 and 96 members (skin/spectral_bundle.h), no melanosome
+/// spread of 2.6, a θo spread of 0.6 and 96 members (skin/spectral_bundle.h), no melanosome
 /// absorptance (WalkOptions::melanosomeAbsorption: no command prints it), and, without
 /// histograms, paths split at their first Rayleigh event where θo = 0 (SpectralRunOptions::
 /// splitRayleighWithoutDeflection).

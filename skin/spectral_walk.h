@@ -135,7 +135,9 @@ struct SpectralEntry {
 inline constexpr std::size_t kSpectralMelanosomeTableSamples = std::size_t{1} << 18;
 
 /// Russian roulette: below this largest weight a path survives with probability weight / it.
-inline constexpr double kSpectralRouletteWeight = 0.05;
+/// 0.3 instead of 0.05 ended the S1 curve's faint paths sooner: 0.89x its time at the same
+/// variance (0.6 raised it 5-17 %; docs/benchmarks.md, session 27).
+inline constexpr double kSpectralRouletteWeight = 0.3;
 
 class SpectralWalk {
  public:
