@@ -48,9 +48,19 @@ skin::Estimate cutAt(const skin::InPlaneCut& cut, const std::vector<skin::Estima
   return values[best];
 }
 
-/// Mean of the in-plane value over the two bins nearest the normal.
-double nearNormal(const skin::InPlaneCut& cut, const std::vector<skin::Estimate>& values) {
-  return 0.5 * (cutAt(cut, values, -1e-6).mean + cutAt(cut, values, 1e-6).mean);
+/// Direction bins of the distributions below: 5° polar rings, 10° azimuth bins.
+constexpr std::size_t kPolarBins = 18, kAzimuthBins = 36;
+
+/// The per-sr value at the normal: the mean over the first polar ring (0–5°, every azimuth
+/// bin, all of which border the normal). The in-plane cut's bins there hold 1/9 of the ring's
+/// solid angle, a few dozen rays at 10⁵, and made ratios to them swing by 4× with the seed.
+skin::Estimate atNormal(const std::vector<skin::Estimate>& perSteradian) {
+  const std::vector<skin::Estimate> ring(perSteradian.begin(), perSteradian.begin() + kAzimuthBins);
+  return skin::meanOfIndependent(ring);  // σ ignores the bins' small negative covariance
+}
+
+std::string withError(const skin::Estimate& e) {
+  return fmt("%.3f", e.mean) + " ± " + fmt("%.3f", e.standardError);
 }
 
 skin::ReflectionDistribution distribution(const skin::Specimen& specimen,
@@ -62,8 +72,8 @@ skin::ReflectionDistribution distribution(const skin::Specimen& specimen,
   run.incidenceDeg = incidenceDeg;
   run.rays = rays;
   run.seed = seed;
-  run.tally.polarBins = 18;
-  run.tally.azimuthBins = 36;
+  run.tally.polarBins = kPolarBins;
+  run.tally.azimuthBins = kAzimuthBins;
   std::vector<skin::ReflectionDistribution> per;
   for (double w : wavelengths)
     per.push_back(skin::reflectionDistribution(
@@ -242,7 +252,7 @@ std::string runValidation(const ValidationOptions& options) {
   epi.seed = seed;
   epi.walk.deepestLayer = skin::Layer::StratumBasale;
   epi.walk.belowRefractiveIndex = optics302[skin::Layer::StratumBasale].refractiveIndex;
-  epi.tally.polarBins = 18;
+  epi.tally.polarBins = kPolarBins;
   epi.tally.azimuthBins = 1;
   const skin::TransmissionProfile profile =
       skin::transmissionProfile(skin::simulateSkin(optics302, epi));
@@ -311,25 +321,30 @@ std::string runValidation(const ValidationOptions& options) {
   const skin::ReflectionDistribution at60 = distribution(s1, spectra, band, 60, bandRays, seed);
   {
     const auto& c = at0.inPlanePerSteradian;
-    const double normal = nearNormal(c, c.total);
-    const double ratio = 0.5 *
-                         (cutAt(c, c.subsurface, 62.5).mean + cutAt(c, c.subsurface, -62.5).mean) /
-                         nearNormal(c, c.subsurface);
-    const double asym =
-        std::fabs(cutAt(c, c.total, 42.5).mean - cutAt(c, c.total, -42.5).mean) / normal;
+    const skin::Estimate normal = atNormal(at0.perSteradian.total);
+    const skin::Estimate grazing =
+        skin::meanOfIndependent({cutAt(c, c.subsurface, 62.5), cutAt(c, c.subsurface, -62.5)});
+    const skin::Estimate ratio =
+        skin::ratioOfIndependent(grazing, atNormal(at0.perSteradian.subsurface));
+    const skin::Estimate left = cutAt(c, c.total, -42.5), right = cutAt(c, c.total, 42.5);
+    const skin::Estimate asym = skin::ratioOfIndependent(
+        {std::fabs(right.mean - left.mean), std::hypot(right.standardError, left.standardError)},
+        normal);
     checks.push_back(
-        {"10", "0° incidence: subsurface per sr at ±62.5° / at the normal", fmt("%.3f", ratio),
+        {"10", "0° incidence: subsurface per sr at ±62.5° / at the normal (± σ)", withError(ratio),
          "cos 62.5° = 0.462 for a Lambertian reflector (MWL99: near-Lambertian); exit Fresnel "
          "transmission lowers it at grazing angles",
          "— (shape only, no data)"});
-    checks.push_back({"10",
-                      "0° incidence: \\|left − right\\| of the total at ±42.5° / at the normal",
-                      fmt("%.3f", asym), "0 (symmetric)", checkMark(asym < 0.05)});
+    checks.push_back(
+        {"10", "0° incidence: \\|left − right\\| of the total at ±42.5° / at the normal (± σ)",
+         withError(asym), "0 (symmetric)", checkMark(asym.mean < 0.05)});
     const auto& d = at60.inPlanePerSteradian;
-    const double forward = cutAt(d, d.total, 62.5).mean, back = cutAt(d, d.total, -62.5).mean;
-    checks.push_back({"10", "60° incidence: total per sr at +62.5° (specular side) / at −62.5°",
-                      fmt("%.3f", forward / back), "> 1: forward (specular) lobe, MWL99",
-                      checkMark(forward > back)});
+    const skin::Estimate forwardOverBack =
+        skin::ratioOfIndependent(cutAt(d, d.total, 62.5), cutAt(d, d.total, -62.5));
+    checks.push_back({"10",
+                      "60° incidence: total per sr at +62.5° (specular side) / at −62.5° (± σ)",
+                      withError(forwardOverBack), "> 1: forward (specular) lobe, MWL99",
+                      checkMark(forwardOverBack.mean > 1)});
     checks.push_back(
         {"10", "visible total reflectance R_t at 0° / 60°",
          fmt("%.4f", at0.totalReflectance.mean) + " / " + fmt("%.4f", at60.totalReflectance.mean),
@@ -354,15 +369,15 @@ std::string runValidation(const ValidationOptions& options) {
                       fmt("%.3f", dUv) + " / " + fmt("%.3f", dIr),
                       "IR more diffuse than UV [AP82, HASS10]", checkMark(dIr > dUv)});
     const auto peak = [](const skin::ReflectionDistribution& d) {
-      const auto& c = d.inPlanePerSteradian;
-      double p = 0;
-      for (const auto& e : c.total) p = std::max(p, e.mean);
-      return p / nearNormal(c, c.total);
+      skin::Estimate p;
+      for (const auto& e : d.inPlanePerSteradian.total)
+        if (e.mean > p.mean) p = e;
+      return skin::ratioOfIndependent(p, atNormal(d.perSteradian.total));
     };
-    const double pUv = peak(uv), pIr = peak(ir);
-    checks.push_back({"11", "peak / normal of the in-plane total per sr at 365 nm / 1100 nm",
-                      fmt("%.3f", pUv) + " / " + fmt("%.3f", pIr), "lower in the IR (more diffuse)",
-                      checkMark(pIr < pUv)});
+    const skin::Estimate pUv = peak(uv), pIr = peak(ir);
+    checks.push_back({"11", "peak / normal of the in-plane total per sr at 365 nm / 1100 nm (± σ)",
+                      withError(pUv) + " / " + withError(pIr), "lower in the IR (more diffuse)",
+                      checkMark(pIr.mean < pUv.mean)});
   }
   std::cout << "validate: Fig. 11 (365 / 1100 nm) " << fmt("%.1f", seconds(t0)) << " s\n";
   if (options.plots)
@@ -473,7 +488,10 @@ std::string runValidation(const ValidationOptions& options) {
        << " | " << c.verdict << " |\n";
   md << "\nFig. 8: S2 epidermis (stratum corneum to basale), bottom index matched, " << rays
      << " rays. Fig. 10: S1, mean of 380–780 nm every 20 nm, " << bandRays
-     << " rays per wavelength. Fig. 11: S1, 45°, " << rays << " rays.\n\n"
+     << " rays per wavelength. Fig. 11: S1, 45°, " << rays
+     << " rays. \"At the normal\" is the mean per sr over the polar ring 0–5° (every azimuth); σ "
+        "of "
+        "a ratio is first order, its two estimates taken as independent.\n\n"
      << "![Fig. 8](validation/fig8_forward_profile.png)\n\n![Fig. "
         "10](validation/fig10_brdf.png)\n\n![Fig. 11](validation/fig11_uv_ir.png)\n";
   const std::string text = md.str();

@@ -153,6 +153,10 @@ Estimate ratioOfExclusive(const Estimate& a, const Estimate& b, std::uint64_t pa
   return {r, std::sqrt(std::fmax(0.0, variance)) / std::fabs(b.mean)};
 }
 
+Estimate ratioOfIndependent(const Estimate& a, const Estimate& b) {
+  return ratioOfExclusive(a, b, 0);  // no covariance
+}
+
 Estimate meanOfIndependent(const std::vector<Estimate>& estimates) {
   if (estimates.empty()) throw std::invalid_argument("mean of estimates: the list is empty");
   double sum = 0, variance = 0;

@@ -61,6 +61,10 @@ Estimate sumOfExclusive(const std::vector<Estimate>& parts, std::uint64_t packet
 /// first-order standard error including their covariance −a·b/(packets − 1). Throws
 /// std::domain_error when b.mean is 0.
 Estimate ratioOfExclusive(const Estimate& a, const Estimate& b, std::uint64_t packets);
+/// a / b for independent estimates, with the first-order standard error √(σa² + r²σb²)/|b| (an
+/// upper bound for disjoint tallies of the same packets, whose covariance is negative). Throws
+/// std::domain_error when b.mean is 0.
+Estimate ratioOfIndependent(const Estimate& a, const Estimate& b);
 /// The mean of independent estimates (e.g. of separate wavelengths): σ = √(Σσᵢ²)/k.
 Estimate meanOfIndependent(const std::vector<Estimate>& estimates);
 /// factor · e (mean and error).

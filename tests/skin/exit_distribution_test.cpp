@@ -86,6 +86,14 @@ TEST(EstimateAlgebra, RatioAndMean) {
   EXPECT_NEAR(r.mean, 0.5, 1e-15);
   EXPECT_NEAR(r.standardError, std::sqrt(6.25e-3), 1e-12);
   EXPECT_THROW(ratioOfExclusive({0.2, 0.01}, {0.0, 0.0}, 10), std::domain_error);
+  // Independent: σ² = (1e-4 + 1e-4)/0.16 = 1.25e-3; a = 0 gives 0 ± σa/|b|.
+  const Estimate independent = ratioOfIndependent({0.2, 0.01}, {0.4, 0.02});
+  EXPECT_NEAR(independent.mean, 0.5, 1e-15);
+  EXPECT_NEAR(independent.standardError, std::sqrt(1.25e-3), 1e-12);
+  const Estimate zero = ratioOfIndependent({0.0, 0.01}, {0.4, 0.02});
+  EXPECT_EQ(zero.mean, 0.0);
+  EXPECT_NEAR(zero.standardError, 0.025, 1e-15);
+  EXPECT_THROW(ratioOfIndependent({0.2, 0.01}, {0.0, 0.0}), std::domain_error);
   // Mean of 1 ± 0.3 and 3 ± 0.4: 2 ± 0.5/2.
   const Estimate m = meanOfIndependent({{1, 0.3}, {3, 0.4}});
   EXPECT_NEAR(m.mean, 2.0, 1e-15);
