@@ -489,9 +489,8 @@ std::string runValidation(const ValidationOptions& options) {
   md << "\nFig. 8: S2 epidermis (stratum corneum to basale), bottom index matched, " << rays
      << " rays. Fig. 10: S1, mean of 380–780 nm every 20 nm, " << bandRays
      << " rays per wavelength. Fig. 11: S1, 45°, " << rays
-     << " rays. \"At the normal\" is the mean per sr over the polar ring 0–5° (every azimuth); σ "
-        "of "
-        "a ratio is first order, its two estimates taken as independent.\n\n"
+     << " rays. \"At the normal\" is the mean per sr over the polar ring 0–5° (every "
+        "azimuth); σ of a ratio is first order, its two estimates taken as independent.\n\n"
      << "![Fig. 8](validation/fig8_forward_profile.png)\n\n![Fig. "
         "10](validation/fig10_brdf.png)\n\n![Fig. 11](validation/fig11_uv_ir.png)\n";
   const std::string text = md.str();
