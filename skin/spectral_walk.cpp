@@ -344,8 +344,9 @@ void SpectralWalk::finish(State& s, PathEnd end, bool scores) const {
     for (std::size_t i = 0; i < n; ++i) ratio[i] *= s.branchWeight;
   std::array<spectral_weights::SlabAbsorption, kLayerCount> slabs{};
   for (std::size_t k = 0; k < slabs_.size(); ++k)
-    slabs[k] = {slabs_[k].muA_perCm.data(), slabs_[k].muA_perCmSingle.data(),
-                index(slabs_[k].layer), slabs_[k].largestMuA_perCm};
+    slabs[k] = {
+        {slabs_[k].muA_perCm.data(), slabs_[k].muA_perCmSingle.data(), slabs_[k].largestMuA_perCm},
+        index(slabs_[k].layer)};
   // Workspace: the transmittance per λ (and the path depths without layer absorption).
   std::vector<double>& work = path.work;
   double* transmitted = nullptr;

@@ -137,10 +137,8 @@ __attribute__((always_inline)) inline float absorbedFractionPerDepthSingle(float
 /// MIS ratio) added to its layer's sums.
 struct StayBooking {
   std::size_t n;
-  const double* muA_perCm;
-  const float* muA_perCmSingle;
-  const double* melaninMuA_perCm;
-  const float* melaninMuA_perCmSingle;
+  const AbsorptionCoefficients& slab;
+  const AbsorptionCoefficients& melanin;
   double cm, melaninCm, roulette;
   double* transmitted;
   double* lost;
@@ -157,8 +155,8 @@ struct StayBooking {
 /// share of the loss is booked as well.
 template <int kTerms, bool kMelanin, bool kBookMelanin>
 __attribute__((always_inline)) inline void bookSeriesStay(const StayBooking& b) {
-  const float* __restrict muA = b.muA_perCmSingle;
-  const float* __restrict melaninMuA = b.melaninMuA_perCmSingle;
+  const float* __restrict muA = b.slab.muA_perCmSingle;
+  const float* __restrict melaninMuA = b.melanin.muA_perCmSingle;
   float* __restrict fraction = b.fraction;
   float* __restrict fractionInMelanin = b.fractionInMelanin;
   const float cm = static_cast<float>(b.cm), melaninCm = static_cast<float>(b.melaninCm);
@@ -186,8 +184,8 @@ __attribute__((always_inline)) inline void bookSeriesStay(const StayBooking& b) 
 /// A stay too deep for the series (some λ's depth above 1/2): 1 − e^{−d} in double.
 template <bool kMelanin, bool kBookMelanin>
 __attribute__((always_inline)) inline void bookDeepStay(const StayBooking& b) {
-  const double* __restrict muA = b.muA_perCm;
-  const double* __restrict melaninMuA = b.melaninMuA_perCm;
+  const double* __restrict muA = b.slab.muA_perCm;
+  const double* __restrict melaninMuA = b.melanin.muA_perCm;
   double* __restrict transmitted = b.transmitted;
   double* __restrict lost = b.lost;
   double* __restrict lostInMelanin = b.lostInMelanin;
@@ -242,10 +240,8 @@ void stayLosses(std::size_t n, const SpectralPath::Stay* stays, std::size_t stay
     const SpectralPath::Stay& stay = stays[k];
     const SlabAbsorption& slab = slabs[stay.slab];
     const StayBooking booking{n,
-                              slab.muA_perCm,
-                              slab.muA_perCmSingle,
-                              melanin.muA_perCm,
-                              melanin.muA_perCmSingle,
+                              slab,
+                              melanin,
                               stay.cm,
                               stay.melaninCm,
                               stay.roulette,

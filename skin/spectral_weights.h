@@ -27,19 +27,18 @@
 
 namespace hylios::skin::spectral_weights {
 
-/// What stayLosses reads of the walk: per slab its absorption coefficient per λ and its layer.
-struct SlabAbsorption {
+/// An absorption coefficient per λ in both precisions (melanin's inside melanosomes, or a slab's)
+/// and its largest value.
+struct AbsorptionCoefficients {
   const double* muA_perCm;       ///< n values
   const float* muA_perCmSingle;  ///< the same rounded to float (the series' depths; stayLosses)
-  std::size_t layer;             ///< index(layer) < kLayerCount
   double largestMuA_perCm;       ///< max of muA_perCm (bounds a stay's depth: stayLosses' series)
 };
+using MelaninAbsorption = AbsorptionCoefficients;
 
-/// Melanin's coefficient inside melanosomes per λ, in both precisions, and its largest value.
-struct MelaninAbsorption {
-  const double* muA_perCm;
-  const float* muA_perCmSingle;
-  double largestMuA_perCm;
+/// What stayLosses reads of the walk per slab: its coefficients and its layer.
+struct SlabAbsorption : AbsorptionCoefficients {
+  std::size_t layer;  ///< index(layer) < kLayerCount
 };
 
 /// Walks the stays in order. On return transmitted[i] = exp(−depth_i) of the whole path (as the

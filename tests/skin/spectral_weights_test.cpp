@@ -89,8 +89,9 @@ StayLossesRun runStayLosses(const std::vector<std::vector<double>>& muA,
   std::vector<spectral_weights::SlabAbsorption> slabs;
   for (std::size_t k = 0; k < muA.size(); ++k) {
     single.emplace_back(muA[k].begin(), muA[k].end());
-    slabs.push_back({muA[k].data(), single.back().data(), 2 * k % kLayerCount,
-                     *std::max_element(muA[k].begin(), muA[k].end())});
+    slabs.push_back(
+        {{muA[k].data(), single.back().data(), *std::max_element(muA[k].begin(), muA[k].end())},
+         2 * k % kLayerCount});
   }
   const std::vector<float> melaninSingle(melaninMuA.begin(), melaninMuA.end());
   const spectral_weights::MelaninAbsorption melanin{
@@ -216,8 +217,8 @@ TEST(SpectralWeights, StayLossesStayWithinOneMillionthOverALongPath) {
 
 TEST(SpectralWeights, PathDepthsSumEachSlabsAndMelaninsDepth) {
   const std::vector<double> first{1.0, 2.0}, second{3.0, 4.0}, melaninMuA{10.0, 20.0};
-  const std::vector<spectral_weights::SlabAbsorption> slabs{{first.data(), nullptr, 0, 2.0},
-                                                            {second.data(), nullptr, 1, 4.0}};
+  const std::vector<spectral_weights::SlabAbsorption> slabs{{{first.data(), nullptr, 2.0}, 0},
+                                                            {{second.data(), nullptr, 4.0}, 1}};
   const std::vector<double> pathCm{0.5, 0.25}, melaninCm{0.1, 0.0};
   std::vector<double> depth(2);
   spectral_weights::pathDepths(2, 2, slabs.data(), pathCm.data(), melaninCm.data(),
