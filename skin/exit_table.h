@@ -62,8 +62,11 @@
 
 namespace hylios::skin {
 
-/// Bump when the file layout or the walk's physics changes (stale tables are then rebuilt).
-inline constexpr std::uint64_t kExitTableFormatVersion = 3;
+/// Bump when the file layout, the walk's physics or what its paths draw changes (stale tables are
+/// then rebuilt, so that a seed renders the same bits with a warm cache as with a cold one). 4:
+/// the ziggurat's free paths and the doubled-angle azimuth (session 26), the spectral roulette
+/// at 0.3 (session 27).
+inline constexpr std::uint64_t kExitTableFormatVersion = 4;
 
 struct ExitTableSettings {
   int cosineBins = 12;               ///< K, bins of the transmitted direction's cosine
