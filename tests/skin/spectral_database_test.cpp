@@ -110,13 +110,19 @@ TEST(SpectralDatabase, ConcentrationUnits) {
 }
 
 TEST(SpectralDatabase, UrocanicAcidBandMeetsItsCitedConstraints) {
-  // trans-urocanic acid (band model, no table found): ε(268 nm) = 18,800 M⁻¹cm⁻¹; 1 % of the peak
-  // at 340 nm; zero from 430 nm. Keratin and DNA are tables: uv_absorber_tables_test.cpp.
-  EXPECT_NEAR(mu(Absorber::UrocanicAcid, 268.0), kLn10 * 18800.0, 1e-6);
-  EXPECT_NEAR(mu(Absorber::UrocanicAcid, 340.0) / mu(Absorber::UrocanicAcid, 268.0), 0.01, 1e-5);
-  EXPECT_EQ(mu(Absorber::UrocanicAcid, 430.0), 0.0);
+  // trans-urocanic acid (band model, no table found): peak 280 nm in the stratum corneum,
+  // ε = 18,800 M⁻¹cm⁻¹ there; the in-vitro width (1 % of the peak 340 − 268 nm away, i.e.
+  // ΔE = 4.62627 − 3.64659 = 0.97968 eV) moved with the peak: 1 % at 1239.84 / (4.42800 − 0.97968)
+  // = 359.55 nm; at 300 nm exp(−½ ((4.42800 − 4.13280) / 0.32281)²) = 0.65828. Zero from 440 nm.
+  // Keratin and DNA are tables: uv_absorber_tables_test.cpp.
+  const double peak = mu(Absorber::UrocanicAcid, 280.0);
+  EXPECT_NEAR(peak, kLn10 * 18800.0, 1e-6);
+  EXPECT_NEAR(mu(Absorber::UrocanicAcid, 359.55) / peak, 0.01, 2e-5);
+  EXPECT_NEAR(mu(Absorber::UrocanicAcid, 300.0) / peak, 0.65828, 1e-5);
+  EXPECT_LT(mu(Absorber::UrocanicAcid, 268.0), peak);
+  EXPECT_EQ(mu(Absorber::UrocanicAcid, 440.0), 0.0);
   EXPECT_EQ(mu(Absorber::UrocanicAcid, 1000.0), 0.0);
-  EXPECT_GT(mu(Absorber::UrocanicAcid, 429.0), 0.0);
+  EXPECT_GT(mu(Absorber::UrocanicAcid, 439.0), 0.0);
 }
 
 TEST(SpectralDatabase, CarotenoidsFollowTheirTablesThenEndAtZero) {
@@ -212,7 +218,7 @@ TEST_F(SpectralDatabaseLoadTest, UnknownExtensionKeyNamesFileAndLine) {
 }
 
 TEST_F(SpectralDatabaseLoadTest, BandCutTooEarlyIsRefused) {
-  replaceInFile("extensions.toml", "zero_from_nm = 430.0", "zero_from_nm = 300.0");
+  replaceInFile("extensions.toml", "zero_from_nm = 440.0", "zero_from_nm = 300.0");
   EXPECT_NE(loadError().find("urocanic_acid"), std::string::npos);
 }
 
