@@ -48,10 +48,11 @@ skin::Estimate cutAt(const skin::InPlaneCut& cut, const std::vector<skin::Estima
   return values[best];
 }
 
-/// The lightly pigmented specimens against the NIST set's lightest quarter at 250–400 nm, sliced
-/// from their whole curves (for the UV plot; the report's table holds the whole curves).
+/// `comparisons` against the group `members` of `nist` at 250–400 nm, sliced from their whole
+/// curves (for the UV plot; the report's table holds the whole curves).
 std::vector<PopulationComparison> ultravioletSlices(
-    const std::vector<PopulationComparison>& comparisons, const SkinPopulation& nist) {
+    const std::vector<PopulationComparison>& comparisons, const SkinPopulation& nist,
+    const std::vector<std::size_t>& members) {
   std::vector<PopulationComparison> slices;
   for (const PopulationComparison& c : comparisons) {
     std::vector<double> nm;
@@ -60,8 +61,8 @@ std::vector<PopulationComparison> ultravioletSlices(
       nm.push_back(c.wavelengthNm[i]);
       model.push_back(c.model[i]);
     }
-    slices.push_back(compareWithPopulation(c.specimen, nm, model, c.incidenceDeg, nist,
-                                           nist.quantileGroup(0.25, true), c.group));
+    slices.push_back(
+        compareWithPopulation(c.specimen, nm, model, c.incidenceDeg, nist, members, c.group));
   }
   return slices;
 }
@@ -255,23 +256,25 @@ std::string runValidation(const ValidationOptions& options) {
                                                "all NIST subjects"));
   }
   // The paper's other lightly pigmented specimens, and S3 with the measured site's stratum corneum.
-  std::vector<PopulationComparison> light = {population[0]};
-  for (const char* name : {"S1", "S2", "S3"}) {
-    skin::Specimen specimen = skin::loadSpecimen(name, specimenDir());
-    std::string label = specimen.name;
-    if (label == "S3") {
-      specimen.thicknessCm[skin::index(skin::Layer::StratumCorneum)] = kNistSiteStratumCorneumCm;
-      label += ", stratum corneum " + fmt("%.0f", kNistSiteStratumCorneumCm * 1e4) + " µm";
-    }
-    const auto model = modelReflectanceCurve(specimen, wholeRange, 8, rays, seed, spectra);
-    light.push_back(compareWithPopulation(label, wholeRange, model, 8, nist,
-                                          nist.quantileGroup(0.25, true), "NIST lightest quarter"));
-  }
-  population.insert(population.end(), light.begin() + 1, light.end());
+  const std::vector<std::size_t> lightestQuarter = nist.quantileGroup(0.25, true);
+  const auto againstTheLightestQuarter = [&](const skin::Specimen& specimen,
+                                             const std::string& label) {
+    return compareWithPopulation(
+        label, wholeRange, modelReflectanceCurve(specimen, wholeRange, 8, rays, seed, spectra), 8,
+        nist, lightestQuarter, "NIST lightest quarter");
+  };
+  skin::Specimen s3AtTheSite = skin::loadSpecimen("S3", specimenDir());
   const double stratumCorneumMuAt300Nm =
-      skin::computeSkinOptics(skin::loadSpecimen("S3", specimenDir()), spectra,
-                              300)[skin::Layer::StratumCorneum]
+      skin::computeSkinOptics(s3AtTheSite, spectra, 300)[skin::Layer::StratumCorneum]
           .muATotal_perCm;
+  s3AtTheSite.thicknessCm[skin::index(skin::Layer::StratumCorneum)] = kNistSiteStratumCorneumCm;
+  const std::vector<PopulationComparison> light = {
+      population[0], againstTheLightestQuarter(skin::loadSpecimen("S1", specimenDir()), "S1"),
+      againstTheLightestQuarter(skin::loadSpecimen("S2", specimenDir()), "S2"),
+      againstTheLightestQuarter(
+          s3AtTheSite,
+          "S3, stratum corneum " + fmt("%.0f", kNistSiteStratumCorneumCm * 1e4) + " µm")};
+  population.insert(population.end(), light.begin() + 1, light.end());
   std::cout << "validate: Fig. 9 (NIST population) " << fmt("%.1f", seconds(t0)) << " s\n";
   if (options.plots) {
     plotPopulationComparisons(images / "fig9_nist.png",
@@ -281,7 +284,7 @@ std::string runValidation(const ValidationOptions& options) {
     plotPopulationComparisons(images / "fig9_nist_uv.png",
                               "Lightly pigmented specimens vs the NIST set's lightest quarter, "
                               "250-400 nm, 8° incidence",
-                              ultravioletSlices(light, nist));
+                              ultravioletSlices(light, nist, lightestQuarter));
   }
 
   // ---- Fig. 8: S2 epidermis at 302 nm ----
